@@ -1,0 +1,95 @@
+// The one description of every setting: keys, units, ranges and help text.
+#include "config/settings.h"
+
+#include <array>
+
+namespace vista {
+namespace {
+
+void describe(SettingsVisitor& v, WindowSettings& s) {
+    v.section("window", "window and GL context");
+    v.field({"width", "px", "window width"}, s.width, 1, 16384);
+    v.field({"height", "px", "window height"}, s.height, 1, 16384);
+    v.field({"fullscreen", "", "fullscreen on the primary monitor"}, s.fullscreen);
+    v.field({"vsync", "", "wait for vertical sync"}, s.vsync);
+    v.field({"gl_debug", "", "print GL errors and warnings through KHR_debug"}, s.gl_debug);
+}
+
+void describe(SettingsVisitor& v, CameraSettings& s) {
+    v.section("camera", "start pose and free-fly controls");
+    v.field({"position", "m", "start position x y z (y up)"}, s.position, -1e8, 1e8);
+    v.field({"yaw_deg", "deg", "start heading, 0 looks along -z, positive turns right"}, s.yaw_deg, -360.0f, 360.0f);
+    v.field({"pitch_deg", "deg", "start pitch, positive looks up"}, s.pitch_deg, -89.0f, 89.0f);
+    v.field({"fov_deg", "deg", "vertical field of view"}, s.fov_deg, 5.0f, 120.0f);
+    v.field({"near_m", "m", "near plane (the far plane is at infinity)"}, s.near_m, 0.001f, 100.0f);
+    v.field({"move_speed", "m/s", "WASD speed"}, s.move_speed, 0.01f, 100000.0f);
+    v.field({"fast_multiplier", "x", "speed factor with Shift"}, s.fast_multiplier, 1.0f, 1000.0f);
+    v.field({"slow_multiplier", "x", "speed factor with Ctrl"}, s.slow_multiplier, 0.001f, 1.0f);
+    v.field({"mouse_sensitivity", "deg/px", "mouse look"}, s.mouse_sensitivity, 0.001f, 10.0f);
+    v.field({"zoom_sensitivity", "deg", "field of view change per scroll step"}, s.zoom_sensitivity, 0.0f, 30.0f);
+    v.field({"updown_speed", "x", "factor on move_speed for Q/E"}, s.updown_speed, 0.0f, 100.0f);
+}
+
+void describe(SettingsVisitor& v, CaptureSettings& s) {
+    static constexpr std::array<const char*, 2> formats{"png", "exr"};
+    v.section("capture", "headless rendering of a camera path");
+    v.field({"path", "", "camera path file"}, s.path);
+    v.field({"frames", "", "frames to render"}, s.frames, 1, 1000000);
+    v.field({"fps", "1/s", "frames per second of path time"}, s.fps, 0.01f, 1000.0f);
+    v.field({"width", "px", "image width"}, s.width, 1, 16384);
+    v.field({"height", "px", "image height"}, s.height, 1, 16384);
+    v.choice({"format", "", "png: 8-bit sRGB after tone mapping; exr: linear half-float HDR"}, s.format, formats);
+    v.field({"out", "", "output directory"}, s.out);
+}
+
+void describe(SettingsVisitor& v, DebugSettings& s) {
+    static constexpr std::array<const char*, 3> views{"final", "depth", "normals"};
+    v.section("debug", "debug views and helpers");
+    v.choice({"view", "", "what the screen shows"}, s.view, views);
+    v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
+    v.field({"grid_spacing", "m", "distance between minor grid lines"}, s.grid_spacing, 0.01f, 100000.0f);
+}
+
+void describe(SettingsVisitor& v, SkySettings& s) {
+    v.section("sky", "sky background and sun direction");
+    v.field({"enabled", "", "draw the sky"}, s.enabled);
+    v.field({"sun_azimuth_deg", "deg", "sun heading, clockwise from -z"}, s.sun_azimuth_deg, -360.0f, 360.0f);
+    v.field({"sun_elevation_deg", "deg", "sun angle above the horizon"}, s.sun_elevation_deg, -90.0f, 90.0f);
+    v.field({"sun_illuminance", "", "HDR intensity of the sun light"}, s.sun_illuminance, 0.0f, 1000.0f);
+    v.field({"zenith_color", "", "linear RGB at the zenith"}, s.zenith_color, 0.0f, 100.0f);
+    v.field({"horizon_color", "", "linear RGB at the horizon"}, s.horizon_color, 0.0f, 100.0f);
+}
+
+void describe(SettingsVisitor& v, PostfxSettings& s) {
+    v.section("postfx", "post-processing chain");
+    v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
+}
+
+void describe(SettingsVisitor& v, ExposureSettings& s) {
+    v.section("postfx.exposure", "exposure");
+    v.field({"enabled", "", "apply exposure compensation"}, s.enabled);
+    v.field({"ev", "stops", "exposure compensation, scale = 2^ev"}, s.ev, -20.0f, 20.0f);
+}
+
+void describe(SettingsVisitor& v, TonemapSettings& s) {
+    static constexpr std::array<const char*, 3> ops{"reinhard", "aces", "clamp"};
+    v.section("postfx.tonemap", "tone mapping from HDR to display");
+    v.field({"enabled", "", "tone map (off: clamp)"}, s.enabled);
+    v.choice({"op", "", "operator"}, s.op, ops);
+    v.field({"white", "", "linear value mapped to white (reinhard)"}, s.white, 0.01f, 1000.0f);
+}
+
+}  // namespace
+
+void describe(SettingsVisitor& v, Settings& s) {
+    describe(v, s.window);
+    describe(v, s.camera);
+    describe(v, s.capture);
+    describe(v, s.debug);
+    describe(v, s.sky);
+    describe(v, s.postfx);
+    describe(v, s.exposure);
+    describe(v, s.tonemap);
+}
+
+}  // namespace vista

@@ -1,0 +1,96 @@
+// The scene's settings: one plain struct per ini section, with defaults and units.
+// Ranges live in the describe() functions (settings.cpp), the one description that the
+// ini loader, the writer, `vista check` and the ImGui panel share.
+#pragma once
+
+#include "config/visitor.h"
+
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace vista {
+
+struct WindowSettings {
+    int width = 1280;       //!< px
+    int height = 720;       //!< px
+    bool fullscreen = false;
+    bool vsync = true;
+    bool gl_debug = false;  //!< KHR_debug callback printing GL errors and warnings
+};
+
+struct CameraSettings {
+    glm::dvec3 position{0.0, 60.0, 0.0};  //!< m, world space (y up)
+    float yaw_deg = 0.0f;                 //!< deg, 0 looks along -z, positive turns right
+    float pitch_deg = -10.0f;             //!< deg, positive looks up
+    float fov_deg = 60.0f;                //!< deg, vertical field of view
+    float near_m = 0.1f;                  //!< m, near plane (the far plane is at infinity)
+    float move_speed = 40.0f;             //!< m/s
+    float fast_multiplier = 8.0f;         //!< speed factor while Shift is held
+    float slow_multiplier = 0.125f;       //!< speed factor while Ctrl is held
+    float mouse_sensitivity = 0.15f;      //!< deg per pixel of mouse motion
+    float zoom_sensitivity = 2.0f;        //!< deg of field of view per scroll step
+    float updown_speed = 1.0f;            //!< factor on move_speed for Q/E
+};
+
+enum class ImageFormat : int { Png, Exr };
+
+struct CaptureSettings {
+    std::string path = "data/paths/default.path";  //!< camera path, relative to the vista root
+    int frames = 8;                                //!< frames to render
+    float fps = 2.0f;                              //!< frames per second of path time
+    int width = 320;                               //!< px
+    int height = 180;                              //!< px
+    ImageFormat format = ImageFormat::Png;
+    std::string out = "out";                       //!< output directory
+};
+
+enum class DebugView : int { Final, Depth, Normals };
+
+struct DebugSettings {
+    DebugView view = DebugView::Final;
+    bool grid = true;           //!< reference grid on the y = 0 plane
+    float grid_spacing = 10.0f; //!< m between minor lines; major lines every 10
+};
+
+struct SkySettings {
+    bool enabled = true;
+    float sun_azimuth_deg = 135.0f;  //!< deg, clockwise from -z (north)
+    float sun_elevation_deg = 35.0f; //!< deg above the horizon
+    float sun_illuminance = 8.0f;    //!< relative units: HDR scale of the sun light
+    glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< linear RGB
+    glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< linear RGB
+};
+
+struct PostfxSettings {
+    bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
+};
+
+struct ExposureSettings {
+    bool enabled = true;
+    float ev = 0.0f;  //!< exposure compensation in stops (scale = 2^ev)
+};
+
+enum class Tonemapper : int { Reinhard, Aces, Clamp };
+
+struct TonemapSettings {
+    bool enabled = true;
+    Tonemapper op = Tonemapper::Aces;
+    float white = 4.0f;  //!< linear value that maps to white (Reinhard)
+};
+
+struct Settings {
+    WindowSettings window;
+    CameraSettings camera;
+    CaptureSettings capture;
+    DebugSettings debug;
+    SkySettings sky;
+    PostfxSettings postfx;
+    ExposureSettings exposure;  // [postfx.exposure]
+    TonemapSettings tonemap;    // [postfx.tonemap]
+};
+
+// Lists every section and field of s to v, in file order.
+void describe(SettingsVisitor& v, Settings& s);
+
+}  // namespace vista
