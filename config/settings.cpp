@@ -43,7 +43,7 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {
-    static constexpr std::array<const char*, 3> views{"final", "depth", "normals"};
+    static constexpr std::array<const char*, 2> views{"final", "depth"};
     v.section("debug", "debug views and helpers");
     v.choice({"view", "", "what the screen shows"}, s.view, views);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);

@@ -45,7 +45,7 @@ struct CaptureSettings {
     std::string out = "out";                       //!< output directory
 };
 
-enum class DebugView : int { Final, Depth, Normals };
+enum class DebugView : int { Final, Depth };
 
 struct DebugSettings {
     DebugView view = DebugView::Final;
