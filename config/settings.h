@@ -57,7 +57,7 @@ struct SkySettings {
     bool enabled = true;
     float sun_azimuth_deg = 135.0f;  //!< deg, clockwise from -z (north)
     float sun_elevation_deg = 35.0f; //!< deg above the horizon
-    float sun_illuminance = 8.0f;    //!< relative units: HDR scale of the sun light
+    float sun_illuminance = 3.0f;    //!< relative units: HDR scale of the sun light
     glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< linear RGB
     glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< linear RGB
 };

@@ -81,6 +81,10 @@ BufferHandle PassBuilder::write(BufferHandle h) {
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].side_effect = true; }
 
+const TextureDesc& PassBuilder::desc(TextureHandle h) const {
+    return graph_.resource(h.index, true, graph_.passes_[pass_].name.c_str()).texture;
+}
+
 std::uint32_t PassContext::texture(TextureHandle h) const {
     return graph_.resource(h.index, true, graph_.passes_[pass_].name.c_str()).id;
 }

@@ -72,6 +72,8 @@ public:
     BufferHandle write(BufferHandle h);
     // The pass has an effect outside the graph (readback, present): never culled.
     void sideEffect();
+    // Description of an existing texture (to size new targets after it).
+    const TextureDesc& desc(TextureHandle h) const;
 
 private:
     friend class FrameGraph;

@@ -1,0 +1,183 @@
+// Subcommands and their options; each one loads the scene the same way and hands over to
+// the window loop, the capture runner or the checker.
+#include "app/cli.h"
+
+#include "app/camera_path.h"
+#include "app/capture.h"
+#include "app/run_window.h"
+#include "app/scene.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <map>
+
+namespace vista {
+namespace {
+
+struct SceneOptions {
+    std::string config;
+    std::vector<std::string> overrides;
+
+    void add(CLI::App* cmd) {
+        cmd->add_option("-c,--config", config, "scene file (default: config/default.ini)");
+        cmd->add_option("--set", overrides, "override a scene key: --set section.key=value (repeatable)");
+    }
+    // Loads the scene; prints every problem and returns false on bad input.
+    bool load(Settings& s) const {
+        std::filesystem::path file = config.empty() ? defaultScenePath() : resolveInput(config);
+        InputErrors errors = loadScene(file, overrides, s);
+        printErrors(errors);
+        return errors.empty();
+    }
+};
+
+struct CaptureOptions {
+    std::string path, size, out, format, stats, backend = "osmesa";
+    int frames = 0;
+    double fps = 0.0;
+    bool force = false;
+
+    void add(CLI::App* cmd, bool images) {
+        cmd->add_option("--path", path, "camera path file (default: [capture] path)");
+        cmd->add_option("--frames", frames, "number of frames (default: [capture] frames)")->check(CLI::Range(1, 1000000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--size", size, "image size WxH, e.g. 320x180 (default: [capture] width x height)");
+        cmd->add_option("--backend", backend, "GL context: osmesa (default), egl or glfw (hidden window)")
+            ->check(CLI::IsMember({"osmesa", "egl", "glfw"}));
+        if (!images) return;
+        cmd->add_option("--out", out, "output directory (default: [capture] out)");
+        cmd->add_option("--format", format, "png (8-bit sRGB) or exr (linear half float)")->check(CLI::IsMember({"png", "exr"}));
+        cmd->add_option("--stats", stats, "write per-pass timings and counters as JSON to this file");
+        cmd->add_flag("--force", force, "overwrite existing images");
+    }
+
+    // Applies the flags over [capture]; false (with a message) on a malformed --size.
+    bool apply(CaptureSettings& c) const {
+        if (!path.empty()) c.path = path;
+        if (frames > 0) c.frames = frames;
+        if (fps > 0.0) c.fps = float(fps);
+        if (!out.empty()) c.out = out;
+        if (!format.empty()) c.format = format == "exr" ? ImageFormat::Exr : ImageFormat::Png;
+        if (!size.empty()) {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 ||
+                h < 1 || w > 16384 || h > 16384) {
+                std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n", size.c_str());
+                return false;
+            }
+            c.width = w;
+            c.height = h;
+        }
+        return true;
+    }
+
+    Backend backendValue() const {
+        static const std::map<std::string, Backend> names{{"osmesa", Backend::OSMesa}, {"egl", Backend::Egl}, {"glfw", Backend::Glfw}};
+        return names.at(backend);
+    }
+};
+
+int capture(const SceneOptions& scene, const CaptureOptions& opts) {
+    CaptureJob job;
+    if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
+    job.stats_file = opts.stats;
+    job.backend = opts.backendValue();
+    job.force = opts.force;
+    CaptureResult r = runCapture(job);
+    if (r.exit_code == 0) {
+        std::printf("vista: wrote %zu image(s) to %s/\n", r.images.size(), job.settings.capture.out.c_str());
+        if (!job.stats_file.empty()) std::printf("vista: wrote stats to %s\n", job.stats_file.c_str());
+    }
+    return r.exit_code;
+}
+
+int check(const SceneOptions& scene) {
+    Settings s;
+    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
+    InputErrors errors = loadScene(file, scene.overrides, s);
+    CameraPath::load(resolveInput(s.capture.path), errors, s.camera.fov_deg);
+    printErrors(errors);
+    if (!errors.empty()) {
+        std::fprintf(stderr, "vista: %zu problem(s) in %s\n", errors.size(), file.c_str());
+        return 2;
+    }
+    std::printf("vista: %s is valid\n", file.c_str());
+    return 0;
+}
+
+int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std::string& json, int warmup) {
+    CaptureJob job;
+    if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
+    if (opts.frames == 0) job.settings.capture.frames = 16;
+    job.backend = opts.backendValue();
+    job.write_images = false;
+    job.warmup_frames = warmup;
+    CaptureResult r = runCapture(job);
+    if (r.exit_code != 0) return r.exit_code;
+    std::printf("%s", r.stats.table().c_str());
+    if (!json.empty()) {
+        std::string problem = writeFileAtomic(json, r.stats.json());
+        if (!problem.empty()) {
+            std::fprintf(stderr, "vista: %s\n", problem.c_str());
+            return 1;
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runCli(int argc, char** argv) {
+    CLI::App app{"vista: outdoor terrain renderer (OpenGL 4.5)"};
+    app.require_subcommand(0, 1);
+
+    SceneOptions run_scene, capture_scene, check_scene, bench_scene;
+    CaptureOptions capture_opts, bench_opts;
+    std::string bench_json;
+    int bench_warmup = 2;
+
+    CLI::App* run_cmd = app.add_subcommand("run", "open a window on the scene (the default)");
+    run_scene.add(run_cmd);
+    CLI::App* capture_cmd = app.add_subcommand("capture", "render a camera path headless to images");
+    capture_scene.add(capture_cmd);
+    capture_opts.add(capture_cmd, true);
+    CLI::App* check_cmd = app.add_subcommand("check", "validate a scene file and its camera path; list every problem");
+    check_scene.add(check_cmd);
+    CLI::App* bench_cmd = app.add_subcommand("bench", "measure per-pass GPU/CPU times");
+    bench_cmd->require_subcommand(1);
+    CLI::App* bench_frame = bench_cmd->add_subcommand("frame", "whole frames along the capture path");
+    bench_scene.add(bench_frame);
+    bench_opts.add(bench_frame, false);
+    bench_frame->add_option("--json", bench_json, "also write the stats JSON to this file");
+    bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(CLI::Range(0, 1000));
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "vista: %s\nRun 'vista --help' for usage.\n", e.what());
+        return 2;
+    }
+
+    if (*capture_cmd) return capture(capture_scene, capture_opts);
+    if (*check_cmd) return check(check_scene);
+    if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
+
+    const SceneOptions& scene = *run_cmd ? run_scene : SceneOptions{};
+    if (!displayAvailable()) {
+        std::fprintf(stderr, "vista: no display found (DISPLAY and WAYLAND_DISPLAY are unset); capturing the "
+                             "default camera path headless instead\n");
+        return capture(scene, CaptureOptions{});
+    }
+    Settings s;
+    if (!scene.load(s)) return 2;
+    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
+    return runWindow(s, file);
+}
+
+}  // namespace vista

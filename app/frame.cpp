@@ -1,0 +1,158 @@
+// The frame: which passes run, in which order, for the current settings.
+#include "app/frame.h"
+
+#include "postfx/tonemap.h"
+#include "renderer/bindings.h"
+#include "renderer/debug_grid.h"
+#include "renderer/debug_view.h"
+#include "renderer/nonfinite.h"
+#include "renderer/reference_copy.h"
+#include "sky/background.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+
+namespace vista {
+
+std::vector<ProgramKey> allPrograms() {
+    std::vector<ProgramKey> programs = {
+        {"renderer/shaders/copy.glsl", {}},
+        {"renderer/shaders/grid.glsl", {}},
+        {"renderer/shaders/debug_depth.glsl", {}},
+        {"renderer/shaders/nonfinite.glsl", {}},
+        {"sky/shaders/background.glsl", {}},
+    };
+    for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
+    return programs;
+}
+
+FrameRenderer::FrameRenderer(std::filesystem::path root)
+    : shaders_(std::move(root)),
+      empty_vao_(gl::createVertexArray("empty (attribute-less draws)")),
+      frame_uniforms_(gl::Buffer::create(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "frame uniforms")) {
+    const GLubyte* name = glGetString(GL_RENDERER);
+    timers_.setMode(timerModeFor(name ? reinterpret_cast<const char*>(name) : ""));
+}
+
+bool FrameRenderer::compilePrograms(std::string& errors) {
+    errors.clear();
+    for (const auto& p : allPrograms())
+        if (!shaders_.get(p.file, p.defines)) errors += shaders_.lastError();
+    return errors.empty();
+}
+
+RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
+    RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
+    FrameUniforms u{};
+    u.view = rc.matrices.view;
+    u.proj = rc.matrices.proj;
+    u.view_proj = rc.matrices.view_proj;
+    u.inv_view_proj = rc.matrices.inv_view_proj;
+    u.camera_world = glm::vec4(glm::vec3(view.position), 1.0f);
+    glm::dvec3 sun = directionFromAngles(settings.sky.sun_azimuth_deg, settings.sky.sun_elevation_deg);
+    u.sun_dir = glm::vec4(glm::vec3(sun), settings.sky.sun_illuminance);
+    u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
+    u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
+    u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
+    glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frame_uniforms_.id());
+    return rc;
+}
+
+double FrameRenderer::measureReferenceCopy(int width, int height) {
+    RenderContext rc{shaders_, device_, empty_vao_.id(), {}, {}, frame_, 0.0};
+    return measureReferenceCopyMs(rc, timers_.mode(), width, height);
+}
+
+namespace {
+
+// Reads a texture back top row first (GL's rows start at the bottom).
+template <class T>
+void readTexture(GLuint texture, int width, int height, GLenum type, std::vector<T>& out) {
+    std::size_t row = std::size_t(width) * 4;
+    out.resize(row * std::size_t(height));
+    glGetTextureImage(texture, 0, GL_RGBA, type, GLsizei(out.size() * sizeof(T)), out.data());
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(out.begin() + std::ptrdiff_t(row * std::size_t(y)),
+                         out.begin() + std::ptrdiff_t(row * std::size_t(y + 1)),
+                         out.begin() + std::ptrdiff_t(row * std::size_t(height - 1 - y)));
+}
+
+}  // namespace
+
+FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
+    RenderContext rc = context(view, s, time_s);
+    FrameGraph graph;
+
+    // Scene targets, cleared once; every scene pass after this draws over them.
+    SceneTargets scene;
+    struct Create {
+        SceneTargets t;
+    };
+    scene = graph.addPass<Create>("frame.clear",
+        [&](PassBuilder& b, Create& d) {
+            d.t.hdr = b.write(b.create("scene.hdr", {view.width, view.height, PixelFormat::RGBA16F}));
+            d.t.depth = b.write(b.create("scene.depth", {view.width, view.height, PixelFormat::Depth32F}));
+        },
+        [&rc](const Create& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.t.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.t.hdr)}, ctx.texture(d.t.depth)), desc.width, desc.height);
+            glClearColor(0, 0, 0, 0);
+            glClearDepth(0.0);  // reversed-Z: 0 is infinitely far
+            glDepthMask(GL_TRUE);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        }).t;
+
+    if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
+    if (s.sky.enabled) addSkyBackgroundPass(graph, rc, s.sky, scene);
+    if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
+
+    TextureHandle display = addTonemapPass(graph, rc, scene.hdr, s);
+    if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug.view, scene);
+
+    struct Readback {
+        TextureHandle source;
+    };
+    if (request.capture_ldr || request.capture_hdr) {
+        TextureHandle source = request.capture_hdr ? scene.hdr : display;
+        graph.addPass<Readback>("capture.readback",
+            [&](PassBuilder& b, Readback& d) {
+                d.source = b.read(source);
+                b.sideEffect();
+            },
+            [&request](const Readback& d, PassContext& ctx) {
+                const TextureDesc& desc = ctx.desc(d.source);
+                if (request.capture_hdr)
+                    readTexture(ctx.texture(d.source), desc.width, desc.height, GL_HALF_FLOAT, *request.capture_hdr);
+                else
+                    readTexture(ctx.texture(d.source), desc.width, desc.height, GL_UNSIGNED_BYTE, *request.capture_ldr);
+            });
+    }
+    if (request.present) {
+        graph.addPass<Readback>("present",
+            [&](PassBuilder& b, Readback& d) {
+                d.source = b.read(display);
+                b.sideEffect();
+            },
+            [&rc](const Readback& d, PassContext& ctx) {
+                const TextureDesc& desc = ctx.desc(d.source);
+                GLuint fb = rc.device.framebuffer({ctx.texture(d.source)});
+                glBlitNamedFramebuffer(fb, 0, 0, 0, desc.width, desc.height, 0, 0, rc.view.width, rc.view.height,
+                                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            });
+    }
+
+    graph.compile();
+    timers_.beginFrame(frame_);
+    graph.execute(pool_, &timers_);
+    timers_.endFrame();
+    counters_.endFrame();
+    pool_.endFrame();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ++frame_;
+    if (request.graph_dot) *request.graph_dot = graph.dot();
+    return FrameReport{graph.executedPasses(), graph.culledPasses()};
+}
+
+}  // namespace vista

@@ -1,0 +1,72 @@
+// One frame of vista: builds the frame graph from the settings (each enabled feature adds
+// its passes), compiles and executes it. Owns the long-lived renderer state: shaders,
+// transient pool, timers and counter readback.
+#pragma once
+
+#include "config/settings.h"
+#include "renderer/frame_graph.h"
+#include "renderer/gl_device.h"
+#include "renderer/pass_timers.h"
+#include "renderer/render_context.h"
+#include "renderer/shader_library.h"
+#include "renderer/transient_pool.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+struct ProgramKey {
+    std::string file;
+    std::vector<std::string> defines;
+};
+
+// Every program variant the renderer can use: compiled up front and by the tests.
+std::vector<ProgramKey> allPrograms();
+
+// What the caller wants out of a frame besides rendering it.
+struct FrameRequest {
+    bool present = false;                          // blit to the default framebuffer (window)
+    std::vector<unsigned char>* capture_ldr = nullptr;  // RGBA8 sRGB, top row first
+    std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear), top row first
+    bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
+    std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
+};
+
+struct FrameReport {
+    std::vector<std::string> executed, culled;
+};
+
+class FrameRenderer {
+public:
+    // Needs a current GL context. root is where shaders are found.
+    explicit FrameRenderer(std::filesystem::path root);
+
+    // Compiles every program; false with the errors (file:line) on failure.
+    bool compilePrograms(std::string& errors);
+
+    FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
+
+    ShaderLibrary& shaders() { return shaders_; }
+    PassTimers& timers() { return timers_; }
+    CounterReadback& counters() { return counters_; }
+    const TransientPool& pool() const { return pool_; }
+    RenderContext context(const ViewParams& view, const Settings& settings, double time_s);
+    // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
+    double measureReferenceCopy(int width, int height);
+    std::uint64_t frameIndex() const { return frame_; }
+
+private:
+    ShaderLibrary shaders_;
+    GlDevice device_;
+    TransientPool pool_{device_};
+    PassTimers timers_;
+    CounterReadback counters_;
+    gl::VertexArray empty_vao_;
+    gl::Buffer frame_uniforms_;
+    std::uint64_t frame_ = 0;
+};
+
+}  // namespace vista

@@ -1,0 +1,201 @@
+// ImGui panel: a SettingsVisitor that draws a widget per field, plus stats and actions.
+#include "app/panel.h"
+
+#include "app/scene.h"
+#include "config/ini.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+namespace vista {
+namespace {
+
+class ImGuiVisitor final : public SettingsVisitor {
+public:
+    bool changed = false;
+
+    void section(const char* name, const char* help) override {
+        if (section_open_) ImGui::PopID();
+        section_open_ = ImGui::CollapsingHeader(name);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help);
+        if (section_open_) ImGui::PushID(name);
+    }
+    void field(const FieldInfo& f, bool& v) override {
+        if (!section_open_) return;
+        changed |= ImGui::Checkbox(f.key, &v);
+        tooltip(f, "");
+    }
+    void field(const FieldInfo& f, int& v, int min, int max) override {
+        if (!section_open_) return;
+        changed |= ImGui::DragInt(f.key, &v, std::max(1.0f, float(max - min) / 500.0f), min, max, "%d",
+                                  ImGuiSliderFlags_AlwaysClamp);
+        tooltip(f, range(min, max));
+    }
+    void field(const FieldInfo& f, float& v, float min, float max) override {
+        if (!section_open_) return;
+        if (max - min <= 1000.0f)
+            changed |= ImGui::SliderFloat(f.key, &v, min, max, "%.4g", ImGuiSliderFlags_AlwaysClamp);
+        else  // wide ranges: a drag whose step follows the magnitude
+            changed |= ImGui::DragFloat(f.key, &v, std::max(std::abs(v) * 0.01f, 0.001f), min, max, "%.4g",
+                                        ImGuiSliderFlags_AlwaysClamp);
+        tooltip(f, range(min, max));
+    }
+    void field(const FieldInfo& f, double& v, double min, double max) override {
+        if (!section_open_) return;
+        changed |= ImGui::InputDouble(f.key, &v, 0.0, 0.0, "%.6g");
+        v = std::clamp(v, min, max);
+        tooltip(f, range(min, max));
+    }
+    void field(const FieldInfo& f, glm::vec3& v, float min, float max) override {
+        if (!section_open_) return;
+        if (std::string_view(f.key).find("color") != std::string_view::npos)
+            changed |= ImGui::ColorEdit3(f.key, &v.x, ImGuiColorEditFlags_HDR | ImGuiColorEditFlags_Float);
+        else
+            changed |= ImGui::DragFloat3(f.key, &v.x, 0.01f, min, max);
+        for (int i = 0; i < 3; ++i) v[i] = std::clamp(v[i], min, max);
+        tooltip(f, range(min, max));
+    }
+    void field(const FieldInfo& f, glm::dvec3& v, double min, double max) override {
+        if (!section_open_) return;
+        changed |= ImGui::InputScalarN(f.key, ImGuiDataType_Double, &v.x, 3, nullptr, nullptr, "%.3f");
+        for (int i = 0; i < 3; ++i) v[i] = std::clamp(v[i], min, max);
+        tooltip(f, range(min, max));
+    }
+    void field(const FieldInfo& f, std::string& v) override {
+        if (!section_open_) return;
+        changed |= ImGui::InputText(f.key, &v, ImGuiInputTextFlags_EnterReturnsTrue);
+        tooltip(f, "");
+    }
+    void choice(const FieldInfo& f, int& v, std::span<const char* const> names) override {
+        if (!section_open_) return;
+        changed |= ImGui::Combo(f.key, &v, names.data(), int(names.size()));
+        tooltip(f, "");
+    }
+    void finish() {
+        if (section_open_) ImGui::PopID();
+        section_open_ = false;
+    }
+
+private:
+    template <class T>
+    static std::string range(T min, T max) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%g..%g", double(min), double(max));
+        return text;
+    }
+    static void tooltip(const FieldInfo& f, const std::string& range) {
+        if (!ImGui::IsItemHovered()) return;
+        std::string unit = *f.unit ? std::string(" [") + f.unit + "]" : "";
+        ImGui::SetTooltip("%s%s%s%s", f.help, unit.c_str(), range.empty() ? "" : "\nrange ", range.c_str());
+    }
+    bool section_open_ = false;
+};
+
+}  // namespace
+
+bool editSettings(Settings& s) {
+    ImGuiVisitor v;
+    describe(v, s);
+    v.finish();
+    return v.changed;
+}
+
+Panel::Panel(std::filesystem::path scene_file) : scene_file_(std::move(scene_file)) {
+    save_path_ = (std::filesystem::path("out") / "scene.ini").string();
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(vistaRoot() / "config/presets", ec))
+        if (e.path().extension() == ".ini") presets_.push_back(e.path());
+    std::sort(presets_.begin(), presets_.end());
+}
+
+bool Panel::draw(Settings& s, const PanelStats& stats) {
+    if (!visible) return false;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 640), ImGuiCond_FirstUseEver);
+    bool changed = false;
+    if (ImGui::Begin("vista (F1 hides)", &visible)) {
+        drawStats(stats);
+        if (ImGui::CollapsingHeader("scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::TextDisabled("%s", scene_file_.c_str());
+            changed |= drawPresets(s);
+            drawSave(s);
+            if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+        }
+        ImGui::Separator();
+        changed |= editSettings(s);
+    }
+    ImGui::End();
+    return changed;
+}
+
+void Panel::drawStats(const PanelStats& st) {
+    if (!ImGui::CollapsingHeader("stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Text("%.1f fps  CPU %.2f ms  GPU %.2f ms", st.fps, st.cpu_ms, st.gpu_ms);
+    ImGui::Text("time %.2f s%s  reference copy %.3f ms", st.time_s, st.paused ? " (paused)" : "", st.reference_copy_ms);
+    ImGui::TextDisabled("%s", st.renderer.c_str());
+    if (ImGui::BeginTable("passes", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableSetupColumn("CPU ms");
+        ImGui::TableSetupColumn("copies");
+        ImGui::TableHeadersRow();
+        for (const auto& p : st.passes) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(), ImGui::TextUnformatted(p.name.c_str());
+            ImGui::TableNextColumn(), ImGui::Text("%.3f", p.gpu_ms);
+            ImGui::TableNextColumn(), ImGui::Text("%.3f", p.cpu_ms);
+            ImGui::TableNextColumn(), ImGui::Text("%.2f", st.reference_copy_ms > 0 ? p.gpu_ms / st.reference_copy_ms : 0.0);
+        }
+        ImGui::EndTable();
+    }
+    for (const auto& [name, value] : st.counters) ImGui::Text("%s: %lld", name.c_str(), static_cast<long long>(value));
+    ImGui::Text("transient targets: %zu", st.pool_textures);
+    if (!st.culled.empty()) {
+        std::string culled;
+        for (const auto& c : st.culled) culled += (culled.empty() ? "" : ", ") + c;
+        ImGui::TextWrapped("culled: %s", culled.c_str());
+    }
+    for (const auto& e : st.shader_errors) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", e.c_str());
+}
+
+bool Panel::drawPresets(Settings& s) {
+    if (presets_.empty()) return false;
+    std::string current = presets_[std::size_t(preset_)].stem().string();
+    bool changed = false;
+    if (ImGui::BeginCombo("preset", current.c_str())) {
+        for (int i = 0; i < int(presets_.size()); ++i)
+            if (ImGui::Selectable(presets_[std::size_t(i)].stem().c_str(), i == preset_)) preset_ = i;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("apply")) {
+        Settings next = s;
+        InputErrors errors = loadIniFile(presets_[std::size_t(preset_)], next);
+        if (errors.empty()) {
+            s = next;
+            changed = true;
+            message_ = "applied preset " + current;
+        } else {
+            message_ = errors.front().str();
+        }
+    }
+    return changed;
+}
+
+void Panel::drawSave(Settings& s) {
+    ImGui::InputText("##save", &save_path_);
+    ImGui::SameLine();
+    if (ImGui::Button("save scene as")) {
+        std::filesystem::path file = save_path_;
+        std::error_code ec;
+        if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+        std::string problem = saveIniFile(file, s);
+        message_ = problem.empty() ? "saved " + file.string() : problem;
+    }
+}
+
+}  // namespace vista

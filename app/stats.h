@@ -1,0 +1,63 @@
+// Run statistics for `vista capture --stats` and `vista bench --json` (the JSON layout in
+// DESIGN.md is a contract): executed and culled passes, the reference copy, per-frame
+// per-pass GPU/CPU times and counters, and medians.
+#pragma once
+
+#include "renderer/pass_timers.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+struct FrameStats {
+    std::uint64_t index = 0;
+    double cpu_ms = 0.0;
+    double gpu_ms = 0.0;
+    std::vector<PassTiming> passes;
+    std::map<std::string, std::int64_t> counters;
+};
+
+struct PassSummary {
+    std::string name;
+    double gpu_ms = 0.0;  // median over frames
+    double cpu_ms = 0.0;  // median over frames
+    double copies = 0.0;  // gpu_ms / reference_copy_ms
+};
+
+class RunStats {
+public:
+    std::string renderer, backend;
+    std::string gpu_timer = "query";  // "query" (GL timer queries) or "finish" (software GL)
+    int width = 0, height = 0;
+    std::vector<std::string> executed, culled;
+    double reference_copy_ms = 0.0;
+
+    // A frame's CPU time and the counters known right away.
+    void addFrame(std::uint64_t index, double cpu_ms);
+    void addCounter(std::uint64_t index, const std::string& name, std::int64_t value);
+    // GPU results that arrived (frames later).
+    void addTimings(const std::vector<FrameTiming>& timings);
+
+    const std::map<std::uint64_t, FrameStats>& frames() const { return frames_; }
+    std::vector<PassSummary> passSummary() const;  // in execution order
+    double gpuMedian() const;
+    double cpuMedian() const;
+
+    std::string json() const;
+    // Aligned text table: pass, GPU ms, CPU ms, copies.
+    std::string table() const;
+
+private:
+    std::map<std::uint64_t, FrameStats> frames_;
+};
+
+double median(std::vector<double> values);
+
+// Writes text to file through a temporary name and a rename. "" on success, else why.
+std::string writeFileAtomic(const std::filesystem::path& file, const std::string& text);
+
+}  // namespace vista

@@ -1,0 +1,432 @@
+// Scene files: inih splits the text into [section] and key = value lines; everything that
+// knows about keys, types and ranges goes through describe() with three visitors: one
+// collects the names, one applies a value, one writes the file.
+#include "config/ini.h"
+
+#include <ini.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace vista {
+namespace {
+
+using Names = std::span<const char* const>;
+
+char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+
+bool iequals(std::string_view a, std::string_view b) {
+    return std::ranges::equal(a, b, {}, lower, lower);
+}
+
+std::string_view trim(std::string_view t) {
+    const auto begin = t.find_first_not_of(" \t\r\n");
+    return begin == t.npos ? std::string_view{} : t.substr(begin, t.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+template <class Range>
+std::string join(const Range& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+    return out;
+}
+
+// Shortest text that reads back as exactly v, so saved files round-trip.
+template <class T>
+std::string exact(T v) {
+    char buf[64];
+    return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
+}
+
+// Ranges are for people to read: 1e+05 is clearer as 100000, and 0.01f as 0.01.
+template <class T>
+std::string range(T lo, T hi) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, std::is_integral_v<T> ? "%.0f..%.0f" : "%g..%g", double(lo), double(hi));
+    return buf;
+}
+
+// parse() reads text into v and returns why it is not accepted, or "". v is written only
+// on success, so a bad value leaves the field as it was.
+std::string parse(std::string_view t, bool& v) {
+    static constexpr const char* words[] = {"false", "true", "no", "yes", "off", "on", "0", "1"};
+    const auto it = std::ranges::find_if(words, [&](const char* w) { return iequals(t, w); });
+    if (it == std::end(words)) return "is not accepted";
+    v = (it - std::begin(words)) % 2 == 1;  // words alternate false, true
+    return "";
+}
+
+template <class T>
+    requires std::is_arithmetic_v<T>
+std::string parse(std::string_view t, T& v, T lo, T hi) {
+    if (t.starts_with('+') && !t.starts_with("+-")) t.remove_prefix(1);
+    T x{};
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+    if (ec == std::errc::result_out_of_range) return "is out of range";
+    if (ec != std::errc{} || end != t.data() + t.size() || !std::isfinite(double(x)))
+        return std::is_integral_v<T> ? "is not a whole number" : "is not a number";
+    if (x < lo || x > hi) return "is out of range";
+    v = x;
+    return "";
+}
+
+template <class T, glm::qualifier Q>
+std::string parse(std::string_view t, glm::vec<3, T, Q>& v, T lo, T hi) {
+    glm::vec<3, T, Q> x{};
+    int n = 0;
+    for (auto pos = t.find_first_not_of(" \t,"); pos != t.npos; pos = t.find_first_not_of(" \t,", pos)) {
+        const auto end = t.find_first_of(" \t,", pos);
+        const auto word = t.substr(pos, end - pos);
+        if (n == 3 || !parse(word, x[n++], std::numeric_limits<T>::lowest(), std::numeric_limits<T>::max()).empty())
+            return "is not three numbers";
+        pos = end;
+    }
+    if (n != 3) return "is not three numbers";
+    for (int i = 0; i < 3; ++i)
+        if (x[i] < lo || x[i] > hi) return "is out of range";
+    v = x;
+    return "";
+}
+
+std::string parse(std::string_view t, std::string& v) {
+    if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
+    v = t;
+    return "";
+}
+
+std::string parse(std::string_view t, int& v, Names names) {
+    const auto it = std::ranges::find_if(names, [&](const char* n) { return iequals(t, n); });
+    if (it == names.end()) return "is not accepted";
+    v = int(it - names.begin());
+    return "";
+}
+
+// The value as it is written to a file.
+std::string format(bool v) { return v ? "true" : "false"; }
+template <class T>
+    requires std::is_arithmetic_v<T>
+std::string format(T v, T, T) { return exact(v); }
+template <class T, glm::qualifier Q>
+std::string format(const glm::vec<3, T, Q>& v, T, T) { return exact(v.x) + " " + exact(v.y) + " " + exact(v.z); }
+std::string format(const std::string& v) { return '"' + v + '"'; }  // quoted: leading spaces survive
+std::string format(int v, Names names) { return v >= 0 && size_t(v) < names.size() ? names[v] : std::to_string(v); }
+
+// What a field accepts, without its unit.
+std::string accepted(bool) { return "true/false, yes/no, on/off, 1/0"; }
+template <class T>
+    requires std::is_arithmetic_v<T>
+std::string accepted(T, T lo, T hi) { return range(lo, hi); }
+template <class T, glm::qualifier Q>
+std::string accepted(const glm::vec<3, T, Q>&, T lo, T hi) { return "three numbers, each " + range(lo, hi); }
+std::string accepted(const std::string&) { return ""; }
+std::string accepted(int, Names names) { return join(names); }
+
+// Routes the eight field kinds to one Derived::visit(info, value, limits...), so each
+// visitor below is a single generic function.
+template <class Derived>
+class Visitor : public SettingsVisitor {
+public:
+    void field(const FieldInfo& i, bool& v) override { self().visit(i, v); }
+    void field(const FieldInfo& i, int& v, int lo, int hi) override { self().visit(i, v, lo, hi); }
+    void field(const FieldInfo& i, float& v, float lo, float hi) override { self().visit(i, v, lo, hi); }
+    void field(const FieldInfo& i, double& v, double lo, double hi) override { self().visit(i, v, lo, hi); }
+    void field(const FieldInfo& i, glm::vec3& v, float lo, float hi) override { self().visit(i, v, lo, hi); }
+    void field(const FieldInfo& i, glm::dvec3& v, double lo, double hi) override { self().visit(i, v, lo, hi); }
+    void field(const FieldInfo& i, std::string& v) override { self().visit(i, v); }
+    void choice(const FieldInfo& i, int& v, Names names) override { self().visit(i, v, names); }
+
+private:
+    Derived& self() { return static_cast<Derived&>(*this); }
+};
+
+struct Section {
+    std::string name;
+    std::vector<std::string> keys;
+};
+
+class NameCollector final : public Visitor<NameCollector> {
+public:
+    std::vector<Section> sections;
+    void section(const char* name, const char*) override { sections.push_back({name, {}}); }
+    template <class T, class... L>
+    void visit(const FieldInfo& i, T&, const L&...) { sections.back().keys.push_back(i.key); }
+};
+
+// Sets the one field [section] key from text, or says why not.
+class Applier final : public Visitor<Applier> {
+public:
+    Applier(std::string_view section, std::string_view key, std::string_view text)
+        : section_(section), key_(key), text_(text) {}
+    std::string error;
+
+    void section(const char* name, const char*) override { inSection_ = section_ == name; }
+    template <class T, class... L>
+    void visit(const FieldInfo& i, T& v, const L&... limits) {
+        if (!inSection_ || key_ != i.key) return;
+        if (const std::string why = parse(text_, v, limits...); !why.empty()) {
+            const std::string unit = *i.unit ? std::string(" (") + i.unit + ")" : "";
+            error = "[" + std::string(section_) + "] " + i.key + " = " + std::string(text_) + " " + why +
+                    "; accepted: " + accepted(v, limits...) + unit;
+        }
+    }
+
+private:
+    std::string_view section_, key_, text_;
+    bool inSection_ = false;
+};
+
+class Writer final : public Visitor<Writer> {
+public:
+    std::string out;
+    void section(const char* name, const char* help) override {
+        out += (out.empty() ? "[" : "\n[") + std::string(name) + "]\n; " + help + "\n";
+    }
+    template <class T, class... L>
+    void visit(const FieldInfo& i, T& v, const L&... limits) {
+        std::string hint = accepted(v, limits...);
+        if constexpr (std::is_same_v<T, bool>) hint = "true or false";  // the other spellings are for typing
+        if constexpr ((std::is_same_v<L, Names> || ...)) hint = "one of: " + hint;
+        if (*i.unit) hint = hint.empty() ? i.unit : i.unit + (", " + hint);
+        out += "; " + std::string(i.help) + (hint.empty() ? "" : " (" + hint + ")") + "\n";
+        out += i.key + (" = " + format(v, limits...)) + "\n";
+    }
+};
+
+std::vector<Section> collectNames(Settings& s) {
+    NameCollector names;
+    describe(names, s);
+    return names.sections;
+}
+
+const Section* find(const std::vector<Section>& sections, std::string_view name) {
+    const auto it = std::ranges::find(sections, name, &Section::name);
+    return it == sections.end() ? nullptr : &*it;
+}
+
+std::vector<std::string> sectionNames(const std::vector<Section>& sections) {
+    std::vector<std::string> out;
+    for (const Section& s : sections) out.push_back(s.name);
+    return out;
+}
+
+std::string unknown(const std::string& what, const std::string& guess, const std::vector<std::string>& accepted) {
+    return what + (guess.empty() ? "; accepted: " + join(accepted) : "; did you mean '" + guess + "'?");
+}
+
+// Optimal string alignment distance (a swap of neighbours counts as one edit), ignoring case.
+size_t distance(std::string_view a, std::string_view b) {
+    const size_t w = b.size() + 1;
+    std::vector<size_t> d((a.size() + 1) * w);
+    for (size_t i = 0; i <= a.size(); ++i) {
+        for (size_t j = 0; j <= b.size(); ++j) {
+            size_t& x = d[i * w + j];
+            if (i == 0 || j == 0) {
+                x = i + j;
+                continue;
+            }
+            x = std::min({d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1,
+                          d[(i - 1) * w + j - 1] + (lower(a[i - 1]) != lower(b[j - 1]))});
+            if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1]))
+                x = std::min(x, d[(i - 2) * w + j - 2] + 1);
+        }
+    }
+    return d.back();
+}
+
+// One load: the state shared by the line reader and the key handler that inih calls.
+class Loader {
+public:
+    Loader(std::string_view text, const std::string& file, Settings& s)
+        : text_(text), file_(file), settings_(s), sections_(collectNames(s)) {
+        if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);
+    }
+
+    InputErrors run() && {
+        const int first = ini_parse_stream(&Loader::readLine, this, &Loader::onKey, this);
+        checkHandled();
+        // inih reports only its first error; the checks above should have found it already.
+        if (first > 0 && std::ranges::none_of(errors_, [&](const InputError& e) { return e.line == first; }))
+            error(first, "cannot be parsed");
+        std::ranges::stable_sort(errors_, {}, &InputError::line);
+        return std::move(errors_);
+    }
+
+private:
+    // inih calls this once per line. Each line is handed over without leading blanks (an
+    // indented line would otherwise continue the previous value) or inline comments (";"
+    // and "#" after a blank, whichever inih was built with).
+    static char* readLine(char* buf, int size, void* self) {
+        auto& l = *static_cast<Loader*>(self);
+        l.checkHandled();
+        if (l.text_.empty()) return nullptr;
+        const auto end = l.text_.find('\n');
+        std::string_view line = l.text_.substr(0, end);
+        l.text_.remove_prefix(end == l.text_.npos ? l.text_.size() : end + 1);
+        ++l.line_;
+        for (size_t c = line.find_first_of(";#"); c != line.npos; c = line.find_first_of(";#", c + 1)) {
+            if (c == 0 || line[c - 1] == ' ' || line[c - 1] == '\t') {
+                line = line.substr(0, c);
+                break;
+            }
+        }
+        line = trim(line);
+        if (line.size() + 2 > size_t(size)) {
+            l.error(l.line_, "line is too long; accepted: up to " + std::to_string(size - 2) + " characters");
+            line = {};
+        } else if (line.starts_with('[')) {
+            l.header(line);
+        } else if (!line.empty()) {
+            l.pending_ = l.line_;
+            l.pendingText_ = line;
+        }
+        line.copy(buf, line.size());
+        buf[line.size()] = '\n';
+        buf[line.size() + 1] = '\0';
+        return buf;
+    }
+
+    static int onKey(void* self, const char*, const char* key, const char* value) {
+        auto& l = *static_cast<Loader*>(self);
+        l.pending_ = 0;
+        l.key(key, value);
+        return 1;
+    }
+
+    // A line that is neither blank nor a header and did not reach onKey is not key = value.
+    void checkHandled() {
+        if (pending_)
+            error(pending_, "cannot parse \"" + pendingText_ + "\"; accepted: key = value, [section] or a ; comment");
+        pending_ = 0;
+    }
+
+    void header(std::string_view line) {
+        section_ = "";  // keys under a broken or unknown header are skipped quietly
+        if (!line.ends_with(']')) {
+            error(line_, "cannot parse \"" + std::string(line) + "\"; accepted: [section]");
+            return;
+        }
+        section_ = std::string(trim(line.substr(1, line.size() - 2)));
+        if (!find(sections_, *section_)) {
+            const std::vector<std::string> names = sectionNames(sections_);
+            error(line_, unknown("unknown section [" + *section_ + "]", didYouMean(*section_, names), names));
+        }
+    }
+
+    void key(const std::string& key, std::string_view value) {
+        if (!section_) return error(line_, key + " = " + std::string(value) + " comes before any [section]");
+        const Section* section = find(sections_, *section_);
+        if (!section) return;
+        const std::string name = "[" + section->name + "] " + key;
+        if (std::ranges::find(section->keys, key) == section->keys.end())
+            return error(line_, unknown("unknown key " + name, didYouMean(key, section->keys), section->keys));
+        if (const auto [it, fresh] = seen_.try_emplace(section->name + "\n" + key, line_); !fresh)
+            return error(line_, name + " is set twice, on lines " + std::to_string(it->second) + " and " +
+                                    std::to_string(line_) + "; the second is ignored");
+        Applier apply(section->name, key, value);
+        describe(apply, settings_);
+        if (!apply.error.empty()) error(line_, apply.error);
+    }
+
+    void error(int line, std::string message) { errors_.push_back({file_, line, std::move(message)}); }
+
+    std::string_view text_;  // not read yet
+    const std::string& file_;
+    Settings& settings_;
+    const std::vector<Section> sections_;
+    InputErrors errors_;
+    int line_ = 0;
+    int pending_ = 0;  // line handed to inih as key = value that has not reached onKey yet
+    std::string pendingText_;
+    std::optional<std::string> section_;  // none before the first header
+    std::map<std::string, int> seen_;     // "section\nkey" -> line
+};
+
+}  // namespace
+
+InputErrors loadIniString(std::string_view text, const std::string& name, Settings& s) {
+    return Loader(text, name, s).run();
+}
+
+InputErrors loadIniFile(const std::filesystem::path& file, Settings& s) {
+    std::FILE* f = std::fopen(file.c_str(), "rb");
+    if (!f) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(errno)}};
+    std::string text;
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+    const int err = std::ferror(f) ? errno : 0;  // a directory opens but fails to read
+    std::fclose(f);
+    if (err) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(err)}};
+    return loadIniString(text, file.string(), s);
+}
+
+InputErrors applyOverride(std::string_view assignment, Settings& s) {
+    const auto fail = [](std::string message) { return InputErrors{{"--set", 0, std::move(message)}}; };
+    const auto eq = assignment.find('=');
+    const std::string name(trim(assignment.substr(0, eq)));
+    const auto dot = name.rfind('.');
+    if (eq == assignment.npos || dot == name.npos || dot == 0 || dot + 1 == name.size())
+        return fail("cannot parse \"" + std::string(assignment) +
+                    "\"; accepted: --set section.key=value, e.g. --set window.width=1920");
+    const std::string section = name.substr(0, dot), key = name.substr(dot + 1);
+    const std::vector<Section> sections = collectNames(s);
+    std::vector<std::string> all;  // suggestions name the whole section.key
+    for (const Section& sec : sections)
+        for (const std::string& k : sec.keys) all.push_back(sec.name + "." + k);
+    const Section* found = find(sections, section);
+    if (!found) return fail(unknown("unknown section [" + section + "]", didYouMean(name, all), sectionNames(sections)));
+    if (std::ranges::find(found->keys, key) == found->keys.end())
+        return fail(unknown("unknown key [" + section + "] " + key, didYouMean(name, all), found->keys));
+    Applier apply(section, key, trim(assignment.substr(eq + 1)));
+    describe(apply, s);
+    return apply.error.empty() ? InputErrors{} : fail(apply.error);
+}
+
+std::string saveIniString(Settings& s) {
+    Writer writer;
+    describe(writer, s);
+    return writer.out;
+}
+
+std::string saveIniFile(const std::filesystem::path& file, Settings& s) {
+    const std::string text = saveIniString(s);
+    std::filesystem::path temp = file;
+    temp += ".tmp";
+    const auto fail = [&](int err) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        return "cannot write " + file.string() + ": " + std::strerror(err);
+    };
+    std::FILE* f = std::fopen(temp.c_str(), "wb");
+    if (!f) return fail(errno);
+    const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    const int err = errno;
+    if (std::fclose(f) != 0) return fail(errno);
+    if (!written) return fail(err);
+    std::error_code ec;
+    std::filesystem::rename(temp, file, ec);
+    return ec ? fail(ec.value()) : "";
+}
+
+std::string didYouMean(std::string_view word, std::span<const std::string> candidates) {
+    std::string best;
+    size_t bestDistance = std::max<size_t>(1, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        if (const size_t d = distance(word, c); d < bestDistance) {
+            bestDistance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+}  // namespace vista

@@ -1,0 +1,43 @@
+// What passes need from the renderer while they execute: shaders, the GL device (targets),
+// the per-frame uniforms and a vertex array for full-screen triangles. Passed explicitly;
+// there is no global renderer state.
+#pragma once
+
+#include "renderer/camera.h"
+#include "renderer/gl_device.h"
+#include "renderer/shader_library.h"
+
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+
+namespace vista {
+
+// std140 mirror of FrameUniforms in renderer/shaders/common.glsl.
+struct FrameUniforms {
+    glm::mat4 view;
+    glm::mat4 proj;
+    glm::mat4 view_proj;
+    glm::mat4 inv_view_proj;
+    glm::vec4 camera_world;
+    glm::vec4 sun_dir;   // xyz towards the sun, w illuminance
+    glm::vec4 viewport;  // w, h, 1/w, 1/h
+    glm::vec4 time;      // x scene time (s), y frame index
+    glm::vec4 near;      // x near plane (m)
+};
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 5 * 16, "FrameUniforms must match the std140 block");
+
+struct RenderContext {
+    ShaderLibrary& shaders;
+    GlDevice& device;
+    GLuint empty_vao;  // bound for attribute-less draws
+    ViewParams view;
+    ViewMatrices matrices;
+    std::uint64_t frame = 0;
+    double time_s = 0.0;
+};
+
+// Draws a full-screen triangle with the bound program.
+void drawFullscreen(const RenderContext& rc);
+
+}  // namespace vista

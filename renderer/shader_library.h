@@ -1,0 +1,80 @@
+// Shader programs from one file each: stages are split by #ifdef VERTEX_SHADER /
+// FRAGMENT_SHADER / COMPUTE_SHADER, variants are #defines pushed from C++, shared code
+// comes in by #include "path" (resolved relative to the including file, then the vista
+// root; each file is included once). Compile errors are reported as file:line through
+// includes. Hot reload: every file a program used is tracked; poll() checks a few
+// timestamps, waits until an editor has finished writing, rebuilds only the affected
+// programs and keeps the old program when the new one fails.
+#pragma once
+
+#include "renderer/gl/objects.h"
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+// GLSL source after #include resolution, with #line directives mapping back to files.
+struct ShaderSource {
+    std::string text;                           // without #version
+    std::vector<std::filesystem::path> files;   // index = GLSL source-string number in #line
+    std::string error;                          // non-empty when a file could not be read
+};
+
+// Resolves includes of file (a path relative to root, or absolute).
+ShaderSource preprocessShader(const std::filesystem::path& root, const std::filesystem::path& file);
+
+// Rewrites "0:12(5): error: ..." (Mesa) and "0(12) : error ..." (NVIDIA) references to
+// "file:line: ..." using the source's file table.
+std::string mapShaderLog(const std::string& log, const std::vector<std::filesystem::path>& files);
+
+class ShaderLibrary {
+public:
+    struct Program {
+        gl::Program gl;         // empty until the first successful compile
+        std::string error;      // last compile error, "" when the current program is current
+        std::string name;       // file plus defines, for messages
+        std::filesystem::path file;
+        std::vector<std::string> defines;
+        std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> deps;
+        GLuint id() const { return gl.id(); }
+    };
+
+    explicit ShaderLibrary(std::filesystem::path root);
+
+    // The program for file with the given defines ("NAME" or "NAME VALUE"), compiled on
+    // first use. The pointer stays valid for the library's lifetime and follows reloads.
+    // Returns nullptr when the first compile fails; the error is in lastError().
+    Program* get(const std::filesystem::path& file, const std::vector<std::string>& defines = {});
+
+    // Checks tracked files at most every poll_interval; recompiles programs whose files
+    // changed and stayed unchanged for settle time. Returns the programs rebuilt.
+    int poll();
+    // Recompiles every program now (the R key). Returns how many failed.
+    int reloadAll();
+
+    // Compile errors of the programs that currently fail, one per program.
+    std::vector<std::string> errors() const;
+    const std::string& lastError() const { return last_error_; }
+    std::size_t size() const { return programs_.size(); }
+    const std::filesystem::path& root() const { return root_; }
+
+    std::chrono::milliseconds poll_interval{250};
+    std::chrono::milliseconds settle{100};
+
+private:
+    bool build(Program& p);  // false keeps the old program and sets p.error
+
+    std::filesystem::path root_;
+    std::map<std::string, std::unique_ptr<Program>> programs_;
+    std::string last_error_;
+    std::chrono::steady_clock::time_point last_poll_{};
+    // Programs whose files changed, with when the change was first seen.
+    std::map<Program*, std::chrono::steady_clock::time_point> pending_;
+};
+
+}  // namespace vista

@@ -1,0 +1,9 @@
+// Binding points shared by C++ (renderer/bindings.h) and GLSL. Only #defines and //
+// comments: tests/unit/bindings_test.cpp includes this file as C++ to check both agree.
+#define BINDING_FRAME_UNIFORMS 0
+#define BINDING_COUNTERS 0
+#define BINDING_IMAGE_OUTPUT 0
+#define BINDING_TEX_0 0
+#define BINDING_TEX_1 1
+#define BINDING_TEX_2 2
+#define BINDING_TEX_3 3

@@ -1,0 +1,9 @@
+// Full-screen triangle vertex stage (no vertex buffer: draw 3 vertices with any VAO).
+#ifdef VERTEX_SHADER
+out vec2 v_uv;
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    v_uv = p;
+    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+#endif

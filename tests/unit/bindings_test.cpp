@@ -1,0 +1,17 @@
+// The binding points C++ uses must be the ones GLSL declares: the GLSL header is plain
+// #defines, so it is included here as C++ and compared.
+#include "renderer/bindings.h"
+#include "renderer/shaders/bindings.glsl"
+
+#include <doctest/doctest.h>
+
+TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
+    using namespace vista;
+    CHECK(binding::kFrameUniforms == BINDING_FRAME_UNIFORMS);
+    CHECK(binding::kCounters == BINDING_COUNTERS);
+    CHECK(binding::kImageOutput == BINDING_IMAGE_OUTPUT);
+    CHECK(binding::kTex0 == BINDING_TEX_0);
+    CHECK(binding::kTex1 == BINDING_TEX_1);
+    CHECK(binding::kTex2 == BINDING_TEX_2);
+    CHECK(binding::kTex3 == BINDING_TEX_3);
+}
