@@ -31,11 +31,15 @@ void CameraController::update(const CameraInput& in, double dt, const CameraSett
                       glm::dvec3(0.0, 1.0, 0.0) * double(in.up) * double(s.updown_speed);
     double len = glm::length(wish);
     glm::dvec3 target = len > 1e-9 ? wish / std::max(len, 1.0) * speed : glm::dvec3(0.0);
-    // Exponential approach to the wished velocity (about 0.1 s time constant): acceleration
-    // and friction in one frame-rate independent step.
-    double blend = 1.0 - std::exp(-std::max(dt, 0.0) / 0.1);
-    velocity += (target - velocity) * blend;
-    position += velocity * std::max(dt, 0.0);
+    // Exponential approach to the wished velocity (time constant tau): acceleration and
+    // friction in one. Velocity and position use the exact solution over dt, so the glide
+    // is the same at any frame rate.
+    constexpr double tau = 0.1;  // s
+    dt = std::max(dt, 0.0);
+    double decay = std::exp(-dt / tau);
+    glm::dvec3 excess = velocity - target;
+    position += target * dt + excess * (tau * (1.0 - decay));
+    velocity = target + excess * decay;
 }
 
 }  // namespace vista

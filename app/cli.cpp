@@ -172,7 +172,18 @@ int runCli(int argc, char** argv) {
     if (!displayAvailable()) {
         std::fprintf(stderr, "vista: no display found (DISPLAY and WAYLAND_DISPLAY are unset); capturing the "
                              "default camera path headless instead\n");
-        return capture(scene, CaptureOptions{});
+        CaptureOptions fallback;
+        Settings s;
+        if (!scene.load(s)) return 2;
+        // Never overwrite an earlier capture: use the next free out/run-NNN when out/ is taken.
+        std::filesystem::path out = s.capture.out;
+        for (int n = 2; std::filesystem::exists(captureFileName(out, 0, s.capture.format)); ++n) {
+            char name[16];
+            std::snprintf(name, sizeof name, "run-%03d", n);
+            out = std::filesystem::path(s.capture.out) / name;
+        }
+        fallback.out = out.string();
+        return capture(scene, fallback);
     }
     Settings s;
     if (!scene.load(s)) return 2;

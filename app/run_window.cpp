@@ -188,7 +188,12 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        panel.draw(s, stats);
+        // The panel shows (and "save scene as" stores) the live camera pose; editing it moves the camera.
+        s.camera.position = camera.position;
+        s.camera.yaw_deg = float(camera.yaw_deg);
+        s.camera.pitch_deg = float(camera.pitch_deg);
+        s.camera.fov_deg = float(camera.fov_deg);
+        if (panel.draw(s, stats)) camera.reset(s.camera);
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         if (take_screenshot) screenshot(width, height);

@@ -3,6 +3,7 @@
 #include "app/capture.h"
 #include "app/frame.h"
 #include "app/scene.h"
+#include "config/ini.h"
 #include "gl_fixture.h"
 
 #include <OpenImageIO/imageio.h>
@@ -156,4 +157,27 @@ TEST_CASE("gl: capture refuses to overwrite images without --force, and unwritab
     job.settings.capture.out = dir.path.string();
     job.settings.capture.path = (dir.path / "missing.path").string();
     CHECK(runCapture(job).exit_code == 2);
+}
+
+TEST_CASE("gl: a scene saved by the panel's writer reproduces the same frame") {
+    test::glContext();
+    FrameRenderer renderer(vistaRoot());
+    std::string errors;
+    REQUIRE(renderer.compilePrograms(errors));
+    Settings original;
+    REQUIRE(loadScene(defaultScenePath(), {"sky.sun_elevation_deg=12.345", "postfx.exposure.ev=0.3"}, original).empty());
+    test::TempDir dir("save-scene");
+    REQUIRE(saveIniFile(dir.path / "saved.ini", original).empty());
+    Settings reloaded;
+    REQUIRE(loadScene(dir.path / "saved.ini", {}, reloaded).empty());
+
+    ViewParams view{reloaded.camera.position, reloaded.camera.yaw_deg, reloaded.camera.pitch_deg,
+                    reloaded.camera.fov_deg, reloaded.camera.near_m, 80, 45};
+    std::vector<unsigned char> a, b;
+    FrameRequest request;
+    request.capture_ldr = &a;
+    renderer.render(original, view, 1.0, request);
+    request.capture_ldr = &b;
+    renderer.render(reloaded, view, 1.0, request);
+    CHECK(a == b);
 }
