@@ -160,15 +160,15 @@ TEST_CASE("camera path: fewer than 2 keys is an error") {
 
 TEST_CASE("camera path: a missing file is one error with no line") {
     InputErrors errors;
-    const CameraPath path = CameraPath::load(VISTA_TEST_DATA_DIR "/no/such/file.path", errors);
+    const CameraPath path = CameraPath::load(VISTA_ROOT_DIR "/no/such/file.path", errors);
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].line == 0);
-    CHECK(errors[0].file == VISTA_TEST_DATA_DIR "/no/such/file.path");
+    CHECK(errors[0].file == VISTA_ROOT_DIR "/no/such/file.path");
     CHECK_MESSAGE(contains(errors[0].message, std::strerror(ENOENT)), errors[0].message);
     CHECK(path.empty());
 
     InputErrors dir_errors;
-    CameraPath::load(VISTA_TEST_DATA_DIR, dir_errors);
+    CameraPath::load(VISTA_ROOT_DIR "/tests", dir_errors);
     REQUIRE(dir_errors.size() == 1);
     CHECK(dir_errors[0].line == 0);
     CHECK_MESSAGE(contains(dir_errors[0].message, std::strerror(EISDIR)), dir_errors[0].message);
@@ -313,7 +313,7 @@ TEST_CASE("camera path: empty and one-key paths") {
 
 TEST_CASE("camera path: the default path file loads cleanly") {
     InputErrors errors;
-    const CameraPath path = CameraPath::load(VISTA_TEST_DATA_DIR "/../../data/paths/default.path", errors);
+    const CameraPath path = CameraPath::load(VISTA_ROOT_DIR "/data/paths/default.path", errors);
     for (const auto& e : errors) MESSAGE(e.str());
     REQUIRE(errors.empty());
     CHECK(path.keys().size() >= 6);
