@@ -79,23 +79,17 @@ void readTexture(GLuint texture, int width, int height, GLenum type, std::vector
                          out.begin() + std::ptrdiff_t(row * std::size_t(height - 1 - y)));
 }
 
-}  // namespace
-
-FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
-    RenderContext rc = context(view, s, time_s);
-    FrameGraph graph;
-
-    // Scene targets, cleared once; every scene pass after this draws over them.
-    SceneTargets scene;
-    struct Create {
+// "frame.clear": creates the scene targets and clears them once; scene passes draw over them.
+SceneTargets addClearPass(FrameGraph& graph, const RenderContext& rc) {
+    struct Data {
         SceneTargets t;
     };
-    scene = graph.addPass<Create>("frame.clear",
-        [&](PassBuilder& b, Create& d) {
-            d.t.hdr = b.write(b.create("scene.hdr", {view.width, view.height, PixelFormat::RGBA16F}));
-            d.t.depth = b.write(b.create("scene.depth", {view.width, view.height, PixelFormat::Depth32F}));
+    return graph.addPass<Data>("frame.clear",
+        [&](PassBuilder& b, Data& d) {
+            d.t.hdr = b.write(b.create("scene.hdr", {rc.view.width, rc.view.height, PixelFormat::RGBA16F}));
+            d.t.depth = b.write(b.create("scene.depth", {rc.view.width, rc.view.height, PixelFormat::Depth32F}));
         },
-        [&rc](const Create& d, PassContext& ctx) {
+        [&rc](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.t.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(d.t.hdr)}, ctx.texture(d.t.depth)), desc.width, desc.height);
             glClearColor(0, 0, 0, 0);
@@ -103,7 +97,50 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
             glDepthMask(GL_TRUE);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }).t;
+}
 
+struct SinkData {
+    TextureHandle source;
+};
+
+// "capture.readback": copies source into request's LDR or HDR buffer (a root).
+void addReadbackPass(FrameGraph& graph, TextureHandle source, const FrameRequest& request) {
+    graph.addPass<SinkData>("capture.readback",
+        [&](PassBuilder& b, SinkData& d) {
+            d.source = b.read(source);
+            b.sideEffect();
+        },
+        [&request](const SinkData& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.source);
+            if (request.capture_hdr)
+                readTexture(ctx.texture(d.source), desc.width, desc.height, GL_HALF_FLOAT, *request.capture_hdr);
+            else
+                readTexture(ctx.texture(d.source), desc.width, desc.height, GL_UNSIGNED_BYTE, *request.capture_ldr);
+        });
+}
+
+// "present": blits the display image to the window's framebuffer (a root).
+void addPresentPass(FrameGraph& graph, const RenderContext& rc, TextureHandle display) {
+    graph.addPass<SinkData>("present",
+        [&](PassBuilder& b, SinkData& d) {
+            d.source = b.read(display);
+            b.sideEffect();
+        },
+        [&rc](const SinkData& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.source);
+            GLuint fb = rc.device.framebuffer({ctx.texture(d.source)});
+            glBlitNamedFramebuffer(fb, 0, 0, 0, desc.width, desc.height, 0, 0, rc.view.width, rc.view.height,
+                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        });
+}
+
+}  // namespace
+
+FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
+    RenderContext rc = context(view, s, time_s);
+    FrameGraph graph;
+
+    SceneTargets scene = addClearPass(graph, rc);
     if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
     if (s.sky.enabled) addSkyBackgroundPass(graph, rc, s.sky, scene);
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
@@ -111,37 +148,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     TextureHandle display = addTonemapPass(graph, rc, scene.hdr, s);
     if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug.view, scene);
 
-    struct Readback {
-        TextureHandle source;
-    };
-    if (request.capture_ldr || request.capture_hdr) {
-        TextureHandle source = request.capture_hdr ? scene.hdr : display;
-        graph.addPass<Readback>("capture.readback",
-            [&](PassBuilder& b, Readback& d) {
-                d.source = b.read(source);
-                b.sideEffect();
-            },
-            [&request](const Readback& d, PassContext& ctx) {
-                const TextureDesc& desc = ctx.desc(d.source);
-                if (request.capture_hdr)
-                    readTexture(ctx.texture(d.source), desc.width, desc.height, GL_HALF_FLOAT, *request.capture_hdr);
-                else
-                    readTexture(ctx.texture(d.source), desc.width, desc.height, GL_UNSIGNED_BYTE, *request.capture_ldr);
-            });
-    }
-    if (request.present) {
-        graph.addPass<Readback>("present",
-            [&](PassBuilder& b, Readback& d) {
-                d.source = b.read(display);
-                b.sideEffect();
-            },
-            [&rc](const Readback& d, PassContext& ctx) {
-                const TextureDesc& desc = ctx.desc(d.source);
-                GLuint fb = rc.device.framebuffer({ctx.texture(d.source)});
-                glBlitNamedFramebuffer(fb, 0, 0, 0, desc.width, desc.height, 0, 0, rc.view.width, rc.view.height,
-                                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            });
-    }
+    if (request.capture_hdr || request.capture_ldr)
+        addReadbackPass(graph, request.capture_hdr ? scene.hdr : display, request);
+    if (request.present) addPresentPass(graph, rc, display);
 
     graph.compile();
     timers_.beginFrame(frame_);

@@ -63,3 +63,20 @@ TEST_CASE("gl: vista without a display captures the default path and says so") {
     CHECK(r.output.find("no display") != std::string::npos);
     CHECK(std::filesystem::exists(dir.path / "out" / "frame_0000.png"));
 }
+
+TEST_CASE("gl: the EGL backend renders the same image as OSMesa") {
+    vista::test::TempDir dir("cli-egl");
+    std::string common = " capture --frames 1 --size 64x36 --stats " + (dir.path / "stats.json").string() + " --out ";
+    Run osmesa = run(common.substr(1) + (dir.path / "osmesa").string() + " --backend osmesa");
+    REQUIRE_MESSAGE(osmesa.code == 0, osmesa.output);
+    Run egl = run(common.substr(1) + (dir.path / "egl").string() + " --backend egl --force");
+    REQUIRE_MESSAGE(egl.code == 0, egl.output);
+    auto read = [](const std::filesystem::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    std::string a = read(dir.path / "osmesa" / "frame_0000.png"), b = read(dir.path / "egl" / "frame_0000.png");
+    CHECK(!a.empty());
+    CHECK(a == b);  // same llvmpipe, same pixels, same encoder
+    CHECK(read(dir.path / "stats.json").find("\"backend\": \"egl\"") != std::string::npos);
+}
