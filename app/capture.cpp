@@ -104,6 +104,8 @@ CaptureResult runCapture(const CaptureJob& job) {
 
         auto start = std::chrono::steady_clock::now();
         std::uint64_t index = renderer.frameIndex();
+        std::string dot;
+        request.graph_dot = !job.dot_file.empty() && i + 1 == total ? &dot : nullptr;
         FrameReport report = renderer.render(s, view, t, request);
         double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         if (frame < 0) continue;
@@ -118,6 +120,10 @@ CaptureResult runCapture(const CaptureJob& job) {
             std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
             if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
             result.images.push_back(file);
+        }
+        if (!dot.empty()) {
+            std::string problem = writeFileAtomic(job.dot_file, dot);
+            if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
         }
         if (job.progress) progress.update(frame + 1);
     }

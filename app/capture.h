@@ -15,6 +15,7 @@ namespace vista {
 struct CaptureJob {
     Settings settings;                // [capture] holds path, frames, fps, size, format, out
     std::filesystem::path stats_file; // empty: no stats file
+    std::filesystem::path dot_file;   // empty: none; else the last frame's graph (Graphviz)
     Backend backend = Backend::OSMesa;
     bool force = false;               // overwrite existing images
     bool write_images = true;         // false for benchmarks

@@ -33,7 +33,7 @@ struct SceneOptions {
 };
 
 struct CaptureOptions {
-    std::string path, size, out, format, stats, backend = "osmesa";
+    std::string path, size, out, format, stats, dot, backend = "osmesa";
     int frames = 0;
     double fps = 0.0;
     bool force = false;
@@ -49,6 +49,7 @@ struct CaptureOptions {
         cmd->add_option("--out", out, "output directory (default: [capture] out)");
         cmd->add_option("--format", format, "png (8-bit sRGB) or exr (linear half float)")->check(CLI::IsMember({"png", "exr"}));
         cmd->add_option("--stats", stats, "write per-pass timings and counters as JSON to this file");
+        cmd->add_option("--dot", dot, "write the last frame's pass graph (Graphviz DOT; culled passes dashed)");
         cmd->add_flag("--force", force, "overwrite existing images");
     }
 
@@ -83,6 +84,7 @@ int capture(const SceneOptions& scene, const CaptureOptions& opts) {
     CaptureJob job;
     if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
     job.stats_file = opts.stats;
+    job.dot_file = opts.dot;
     job.backend = opts.backendValue();
     job.force = opts.force;
     CaptureResult r = runCapture(job);
