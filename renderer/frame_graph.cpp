@@ -51,33 +51,18 @@ void addUnique(std::vector<std::uint32_t>& list, std::uint32_t value) {
 }
 }  // namespace
 
-TextureHandle PassBuilder::read(TextureHandle h) {
-    graph_.resource(h.index, true, graph_.passes_[pass_].name.c_str());
-    addUnique(graph_.passes_[pass_].reads, h.index);
-    addUnique(graph_.resources_[h.index].readers, pass_);
-    return h;
+void PassBuilder::declare(std::uint32_t resource, bool texture, bool write) {
+    graph_.resource(resource, texture, graph_.passes_[pass_].name.c_str());
+    FrameGraph::PassNode& pass = graph_.passes_[pass_];
+    FrameGraph::ResourceNode& res = graph_.resources_[resource];
+    addUnique(write ? pass.writes : pass.reads, resource);
+    addUnique(write ? res.writers : res.readers, pass_);
 }
 
-TextureHandle PassBuilder::write(TextureHandle h) {
-    graph_.resource(h.index, true, graph_.passes_[pass_].name.c_str());
-    addUnique(graph_.passes_[pass_].writes, h.index);
-    addUnique(graph_.resources_[h.index].writers, pass_);
-    return h;
-}
-
-BufferHandle PassBuilder::read(BufferHandle h) {
-    graph_.resource(h.index, false, graph_.passes_[pass_].name.c_str());
-    addUnique(graph_.passes_[pass_].reads, h.index);
-    addUnique(graph_.resources_[h.index].readers, pass_);
-    return h;
-}
-
-BufferHandle PassBuilder::write(BufferHandle h) {
-    graph_.resource(h.index, false, graph_.passes_[pass_].name.c_str());
-    addUnique(graph_.passes_[pass_].writes, h.index);
-    addUnique(graph_.resources_[h.index].writers, pass_);
-    return h;
-}
+TextureHandle PassBuilder::read(TextureHandle h) { return declare(h.index, true, false), h; }
+TextureHandle PassBuilder::write(TextureHandle h) { return declare(h.index, true, true), h; }
+BufferHandle PassBuilder::read(BufferHandle h) { return declare(h.index, false, false), h; }
+BufferHandle PassBuilder::write(BufferHandle h) { return declare(h.index, false, true), h; }
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].side_effect = true; }
 

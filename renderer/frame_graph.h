@@ -78,6 +78,7 @@ public:
 private:
     friend class FrameGraph;
     PassBuilder(FrameGraph& graph, std::uint32_t pass) : graph_(graph), pass_(pass) {}
+    void declare(std::uint32_t resource, bool texture, bool write);
     FrameGraph& graph_;
     std::uint32_t pass_;
 };
