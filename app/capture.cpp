@@ -74,6 +74,12 @@ CaptureResult runCapture(const CaptureJob& job) {
     if (!context) return {fail(1, error), {}, {}};
     FrameRenderer renderer(vistaRoot());
     if (!renderer.compilePrograms(error)) return {fail(1, "shader compilation failed:\n" + error), {}, {}};
+    errors = renderer.prepare(s);
+    if (!errors.empty()) {
+        printErrors(errors);
+        result.exit_code = 2;
+        return result;
+    }
 
     RunStats& stats = result.stats;
     stats.renderer = context->renderer();
@@ -113,8 +119,9 @@ CaptureResult runCapture(const CaptureJob& job) {
         stats.executed = report.executed;
         stats.culled = report.culled;
         stats.addFrame(index, cpu_ms);
+        for (const auto& [name, value] : report.counters) stats.addCounter(index, name, value);
         stats.addTimings(renderer.timers().collect());
-        for (const auto& v : renderer.counters().collect()) stats.addCounter(v.frame, v.name, std::int64_t(v.value));
+        for (const auto& v : renderer.counters().collect()) stats.addCounter(v.frame, v.name, double(v.value));
         if (job.write_images) {
             std::filesystem::path file = captureFileName(out, frame, c.format);
             std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
@@ -129,7 +136,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     }
     if (job.progress) progress.finish();
     stats.addTimings(renderer.timers().collect(/*wait=*/true));
-    for (const auto& v : renderer.counters().collect(true)) stats.addCounter(v.frame, v.name, std::int64_t(v.value));
+    for (const auto& v : renderer.counters().collect(true)) stats.addCounter(v.frame, v.name, double(v.value));
 
     if (!job.stats_file.empty()) {
         std::string problem = writeFileAtomic(job.stats_file, stats.json());

@@ -6,6 +6,7 @@
 #include "app/capture.h"
 #include "app/run_window.h"
 #include "app/scene.h"
+#include "terrain/gen_heightmap.h"
 
 #include <CLI/CLI.hpp>
 
@@ -155,6 +156,14 @@ int runCli(int argc, char** argv) {
     bench_frame->add_option("--json", bench_json, "also write the stats JSON to this file");
     bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(CLI::Range(0, 1000));
 
+    int gen_size = 1025;
+    std::uint32_t gen_seed = 1;
+    std::string gen_out;
+    CLI::App* gen_cmd = app.add_subcommand("gen-heightmap", "generate a deterministic island heightmap (16-bit PNG or float EXR)");
+    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)");
+    gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere");
+    gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -168,6 +177,7 @@ int runCli(int argc, char** argv) {
 
     if (*capture_cmd) return capture(capture_scene, capture_opts);
     if (*check_cmd) return check(check_scene);
+    if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
 
     const SceneOptions& scene = *run_cmd ? run_scene : SceneOptions{};

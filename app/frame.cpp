@@ -7,6 +7,7 @@
 #include "renderer/debug_view.h"
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
+#include "app/scene.h"
 #include "sky/background.h"
 
 #include <glm/trigonometric.hpp>
@@ -24,6 +25,7 @@ std::vector<ProgramKey> allPrograms() {
         {"sky/shaders/background.glsl", {}},
     };
     for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -40,6 +42,25 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
     for (const auto& p : allPrograms())
         if (!shaders_.get(p.file, p.defines)) errors += shaders_.lastError();
     return errors.empty();
+}
+
+InputErrors FrameRenderer::prepare(const Settings& s) {
+    InputErrors errors;
+    if (!s.terrain.enabled) {
+        terrain_.reset();  // a disabled feature keeps nothing allocated
+        terrain_failed_ = false;
+        return errors;
+    }
+    TerrainSettings wanted = s.terrain;
+    wanted.heightmap = resolveInput(s.terrain.heightmap).string();
+    bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
+                                                           terrain_source_.grid == wanted.grid;
+    if (same) return errors;
+    terrain_.reset();
+    terrain_ = Terrain::load(wanted, shaders_, errors);
+    terrain_source_ = wanted;
+    terrain_failed_ = terrain_ == nullptr;
+    return errors;
 }
 
 RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
@@ -141,6 +162,15 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     FrameGraph graph;
 
     SceneTargets scene = addClearPass(graph, rc);
+    FrameReport report;
+    if (s.terrain.enabled && terrain_) {
+        addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
+        const TerrainCounters& c = terrain_->counters();
+        report.counters["terrain.triangles"] = double(c.triangles);
+        report.counters["terrain.nodes"] = double(c.nodes);
+        report.counters["terrain.draws"] = double(c.draws);
+        report.counters["terrain.select_ms"] = c.select_ms;
+    }
     if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
     if (s.sky.enabled) addSkyBackgroundPass(graph, rc, s.sky, scene);
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
@@ -161,7 +191,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;
     if (request.graph_dot) *request.graph_dot = graph.dot();
-    return FrameReport{graph.executedPasses(), graph.culledPasses()};
+    report.executed = graph.executedPasses();
+    report.culled = graph.culledPasses();
+    return report;
 }
 
 }  // namespace vista

@@ -10,9 +10,11 @@
 #include "renderer/render_context.h"
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
+#include "terrain/terrain.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,7 @@ struct FrameRequest {
 
 struct FrameReport {
     std::vector<std::string> executed, culled;
+    std::map<std::string, double> counters;  // CPU-side counters of this frame (terrain.nodes, ...)
 };
 
 class FrameRenderer {
@@ -46,6 +49,12 @@ public:
 
     // Compiles every program; false with the errors (file:line) on failure.
     bool compilePrograms(std::string& errors);
+
+    // Loads (or drops) what the settings need: the terrain when [terrain] is enabled. Cheap
+    // when nothing changed; call before rendering and after settings change. Returns the
+    // problems (bad heightmap ...); the feature is then left out.
+    InputErrors prepare(const Settings& settings);
+    Terrain* terrain() { return terrain_.get(); }
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
 
@@ -67,6 +76,9 @@ private:
     gl::VertexArray empty_vao_;
     gl::Buffer frame_uniforms_;
     std::uint64_t frame_ = 0;
+    std::unique_ptr<Terrain> terrain_;
+    TerrainSettings terrain_source_;  // as given, to notice changes
+    bool terrain_failed_ = false;     // do not retry a bad heightmap every frame
 };
 
 }  // namespace vista

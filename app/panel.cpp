@@ -152,7 +152,7 @@ void Panel::drawStats(const PanelStats& st) {
         }
         ImGui::EndTable();
     }
-    for (const auto& [name, value] : st.counters) ImGui::Text("%s: %lld", name.c_str(), static_cast<long long>(value));
+    for (const auto& [name, value] : st.counters) ImGui::Text("%s: %.6g", name.c_str(), value);
     ImGui::Text("transient targets: %zu", st.pool_textures);
     if (!st.culled.empty()) {
         std::string culled;

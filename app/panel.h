@@ -20,7 +20,7 @@ struct PanelStats {
     bool paused = false;
     std::vector<PassTiming> passes;  // latest complete GPU frame
     std::vector<std::string> culled;
-    std::map<std::string, std::int64_t> counters;
+    std::map<std::string, double> counters;
     std::vector<std::string> shader_errors;
     std::size_t pool_textures = 0;
     std::string renderer;

@@ -94,6 +94,19 @@ void screenshot(int width, int height) {
     std::fprintf(stderr, "vista: %s\n", problem.empty() ? ("screenshot saved to " + file.string()).c_str() : problem.c_str());
 }
 
+// Terrain-following camera (000's first-person manipulator): walking keeps the eye at
+// eye_height_m above the ground; the free camera stops at the surface unless allowed below.
+void keepAboveGround(CameraController& camera, const Terrain& terrain, const CameraSettings& s) {
+    double ground = terrain.heightAt(camera.position.x, camera.position.z);
+    if (s.follow_terrain) {
+        camera.position.y = ground + s.eye_height_m;
+        camera.velocity.y = 0.0;
+    } else if (!s.allow_below_ground && camera.position.y < ground + s.near_m * 2.0) {
+        camera.position.y = ground + s.near_m * 2.0;
+        camera.velocity.y = std::max(camera.velocity.y, 0.0);
+    }
+}
+
 }  // namespace
 
 int runWindow(Settings s, const std::filesystem::path& scene_file) {
@@ -110,6 +123,12 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
     if (!renderer.compilePrograms(error)) {
         std::fprintf(stderr, "vista: shader compilation failed:\n%s", error.c_str());
         return 1;
+    }
+
+    InputErrors problems = renderer.prepare(s);
+    if (!problems.empty()) {
+        printErrors(problems);
+        return 2;
     }
 
     WindowEvents ev;
@@ -147,6 +166,10 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         bool take_screenshot = ev.screenshot;
         ev = WindowEvents{};
         camera.update(input, dt, s.camera);
+        stats.shader_errors.clear();
+        for (const auto& p : renderer.prepare(s)) stats.shader_errors.push_back(p.str());  // settings edited live
+        if (Terrain* terrain = renderer.terrain(); terrain && s.terrain.enabled)
+            keepAboveGround(camera, *terrain, s.camera);
         if (!paused) time_s += dt;
         renderer.shaders().poll();
 
@@ -174,13 +197,15 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
             stats.passes = t.passes;
             stats.gpu_ms = t.gpu_ms;
         }
-        for (const auto& c : renderer.counters().collect()) stats.counters[c.name] = std::int64_t(c.value);
+        for (const auto& c : renderer.counters().collect()) stats.counters[c.name] = double(c.value);
+        for (const auto& [name, value] : report.counters) stats.counters[name] = value;
         stats.cpu_ms += (cpu_ms - stats.cpu_ms) * 0.1;
         stats.fps += (1.0 / std::max(dt, 1e-6) - stats.fps) * 0.1;
         stats.time_s = time_s;
         stats.paused = paused;
         stats.culled = report.culled;
-        stats.shader_errors = renderer.shaders().errors();
+        std::vector<std::string> shader_errors = renderer.shaders().errors();
+        stats.shader_errors.insert(stats.shader_errors.end(), shader_errors.begin(), shader_errors.end());
         stats.pool_textures = renderer.pool().liveCount();
 
         glBindFramebuffer(GL_FRAMEBUFFER, 0);

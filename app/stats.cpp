@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cerrno>
 #include <cstring>
@@ -27,7 +28,7 @@ void RunStats::addFrame(std::uint64_t index, double cpu_ms) {
     f.cpu_ms = cpu_ms;
 }
 
-void RunStats::addCounter(std::uint64_t index, const std::string& name, std::int64_t value) {
+void RunStats::addCounter(std::uint64_t index, const std::string& name, double value) {
     frames_[index].counters[name] = value;
 }
 
@@ -77,7 +78,13 @@ std::string RunStats::json() const {
         json passes = json::object();
         for (const auto& p : f.passes) passes[p.name] = {{"gpu_ms", p.gpu_ms}, {"cpu_ms", p.cpu_ms}};
         json counters = json::object();
-        for (const auto& [name, value] : f.counters) counters[name] = value;
+        for (const auto& [name, value] : f.counters) {
+            // Counts print as integers, timings as decimals.
+            if (value == std::floor(value) && std::abs(value) < 9.0e15)
+                counters[name] = std::int64_t(value);
+            else
+                counters[name] = value;
+        }
         frames.push_back({{"index", index}, {"cpu_ms", f.cpu_ms}, {"gpu_ms", f.gpu_ms}, {"passes", passes},
                           {"counters", counters}});
     }

@@ -18,7 +18,7 @@ struct FrameStats {
     double cpu_ms = 0.0;
     double gpu_ms = 0.0;
     std::vector<PassTiming> passes;
-    std::map<std::string, std::int64_t> counters;
+    std::map<std::string, double> counters;
 };
 
 struct PassSummary {
@@ -38,7 +38,7 @@ public:
 
     // A frame's CPU time and the counters known right away.
     void addFrame(std::uint64_t index, double cpu_ms);
-    void addCounter(std::uint64_t index, const std::string& name, std::int64_t value);
+    void addCounter(std::uint64_t index, const std::string& name, double value);
     // GPU results that arrived (frames later).
     void addTimings(const std::vector<FrameTiming>& timings);
 

@@ -28,6 +28,9 @@ void describe(SettingsVisitor& v, CameraSettings& s) {
     v.field({"mouse_sensitivity", "deg/px", "mouse look"}, s.mouse_sensitivity, 0.001f, 10.0f);
     v.field({"zoom_sensitivity", "deg", "field of view change per scroll step"}, s.zoom_sensitivity, 0.0f, 30.0f);
     v.field({"updown_speed", "x", "factor on move_speed for Q/E"}, s.updown_speed, 0.0f, 100.0f);
+    v.field({"follow_terrain", "", "walk: keep the eye at eye_height_m above the ground"}, s.follow_terrain);
+    v.field({"eye_height_m", "m", "eye height above the ground when following the terrain"}, s.eye_height_m, 0.01f, 1000.0f);
+    v.field({"allow_below_ground", "", "the free camera may go below the terrain surface"}, s.allow_below_ground);
 }
 
 void describe(SettingsVisitor& v, CaptureSettings& s) {
@@ -48,6 +51,34 @@ void describe(SettingsVisitor& v, DebugSettings& s) {
     v.choice({"view", "", "what the screen shows"}, s.view, views);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
     v.field({"grid_spacing", "m", "distance between minor grid lines"}, s.grid_spacing, 0.01f, 100000.0f);
+}
+
+void describe(SettingsVisitor& v, TerrainSettings& s) {
+    static constexpr std::array<const char*, 4> views{"shaded", "lod", "morph", "normals"};
+    v.section("terrain", "heightmap terrain with CDLOD level of detail");
+    v.field({"enabled", "", "draw the terrain"}, s.enabled);
+    v.field({"heightmap", "", "PNG (8/16-bit), TIFF, EXR, or raw .r16 with raw_width/raw_height"}, s.heightmap);
+    v.field({"raw_width", "samples", "width of a .r16 heightmap"}, s.raw_width, 0, 65536);
+    v.field({"raw_height", "samples", "height of a .r16 heightmap"}, s.raw_height, 0, 65536);
+    v.field({"origin", "m", "world position of the map centre; y is added to heights"}, s.origin, -1e8, 1e8);
+    v.field({"size_m", "m", "extent of the map in x and z"}, s.size_m, 1.0f, 1.0e7f);
+    v.field({"height_scale_m", "m", "height of heightmap value 1"}, s.height_scale_m, 0.0f, 1.0e5f);
+    v.field({"height_offset_m", "m", "height of heightmap value 0"}, s.height_offset_m, -1.0e5f, 1.0e5f);
+    v.field({"grid", "quads", "quads per node side; a leaf node spans this many texels"}, s.grid, 2, 256);
+    v.field({"base_range_m", "m", "LOD 0 range (raised to what the node size needs)"}, s.base_range_m, 1.0f, 1.0e6f);
+    v.field({"range_ratio", "x", "range growth per LOD level"}, s.range_ratio, 1.5f, 4.0f);
+    v.field({"morph_start", "", "fraction of each level's span before morphing starts"}, s.morph_start, 0.0f, 0.95f);
+    v.choice({"view", "", "shaded, or colour by LOD level, morph factor or normal"}, s.view, views);
+    v.field({"wireframe", "", "overlay the node grids' edges"}, s.wireframe);
+    v.field({"bounds", "", "draw the selected nodes' bounding boxes"}, s.bounds);
+    v.field({"detail_distance_m", "m", "detail textures fade out by this distance"}, s.detail_distance_m, 1.0f, 100000.0f);
+    v.field({"texture_scale_m", "m", "size of one repeat of a material texture"}, s.texture_scale_m, 0.05f, 1000.0f);
+    v.field({"sand_top", "", "heightmap value where beaches end"}, s.sand_top, 0.0f, 1.0f);
+    v.field({"grass_top", "", "heightmap value where grass gives way to rock"}, s.grass_top, 0.0f, 1.0f);
+    v.field({"snow_start", "", "heightmap value where snow begins"}, s.snow_start, 0.0f, 1.0f);
+    v.field({"band_blend", "", "heightmap units over which bands blend"}, s.band_blend, 0.0001f, 0.5f);
+    v.field({"band_jitter", "", "heightmap units of noise on band edges"}, s.band_jitter, 0.0f, 0.5f);
+    v.field({"rock_slope", "", "normal y below which slopes turn to rock (1 = flat)"}, s.rock_slope, 0.0f, 1.0f);
 }
 
 void describe(SettingsVisitor& v, SkySettings& s) {
@@ -86,6 +117,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.camera);
     describe(v, s.capture);
     describe(v, s.debug);
+    describe(v, s.terrain);
     describe(v, s.sky);
     describe(v, s.postfx);
     describe(v, s.exposure);

@@ -31,6 +31,9 @@ struct CameraSettings {
     float mouse_sensitivity = 0.15f;      //!< deg per pixel of mouse motion
     float zoom_sensitivity = 2.0f;        //!< deg of field of view per scroll step
     float updown_speed = 1.0f;            //!< factor on move_speed for Q/E
+    bool follow_terrain = false;          //!< walk: keep the eye at eye_height_m above the ground
+    float eye_height_m = 1.7f;            //!< m above the ground when following the terrain
+    bool allow_below_ground = false;      //!< free camera may go below the terrain surface
 };
 
 enum class ImageFormat : int { Png, Exr };
@@ -51,6 +54,34 @@ struct DebugSettings {
     DebugView view = DebugView::Final;
     bool grid = true;           //!< reference grid on the y = 0 plane
     float grid_spacing = 10.0f; //!< m between minor lines; major lines every 10
+};
+
+enum class TerrainView : int { Shaded, Lod, Morph, Normals };
+
+struct TerrainSettings {
+    bool enabled = true;
+    std::string heightmap = "data/heightmaps/island.png";  //!< PNG/TIFF/EXR, or .r16 with raw_width/raw_height
+    int raw_width = 0;                //!< samples, .r16 only
+    int raw_height = 0;               //!< samples, .r16 only
+    glm::dvec3 origin{0.0};           //!< m, world position of the map centre (y: added to heights)
+    float size_m = 8192.0f;           //!< m, extent of the map in x and z
+    float height_scale_m = 600.0f;    //!< m, height of heightmap value 1
+    float height_offset_m = 0.0f;     //!< m, height of heightmap value 0
+    int grid = 32;                    //!< quads per node side (a leaf node spans this many texels)
+    float base_range_m = 150.0f;      //!< m, LOD 0 range (raised to what the node size needs)
+    float range_ratio = 2.0f;         //!< range growth per LOD level
+    float morph_start = 0.7f;         //!< fraction of each level's span before morphing starts
+    TerrainView view = TerrainView::Shaded;
+    bool wireframe = false;           //!< overlay node grid edges
+    bool bounds = false;              //!< draw the selected nodes' bounding boxes
+    float detail_distance_m = 250.0f; //!< m, detail textures fade out by this distance
+    float texture_scale_m = 4.0f;     //!< m covered by one repeat of a material texture
+    float sand_top = 0.135f;          //!< heightmap value where beaches end
+    float grass_top = 0.45f;          //!< heightmap value where grass gives way to rock
+    float snow_start = 0.70f;         //!< heightmap value where snow begins
+    float band_blend = 0.03f;         //!< heightmap units over which bands blend
+    float band_jitter = 0.02f;        //!< heightmap units of noise on band edges
+    float rock_slope = 0.75f;         //!< normal.y below which slopes turn to rock
 };
 
 struct SkySettings {
@@ -84,6 +115,7 @@ struct Settings {
     CameraSettings camera;
     CaptureSettings capture;
     DebugSettings debug;
+    TerrainSettings terrain;
     SkySettings sky;
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]

@@ -99,6 +99,10 @@ public:
     Texture() = default;
     static Texture create2D(GLsizei width, GLsizei height, GLenum internal_format, GLsizei levels,
                             std::string_view name);
+    // Takes ownership of a texture made elsewhere (arrays, 3D).
+    static Texture adopt(GLuint id, GLsizei width, GLsizei height, GLenum internal_format) {
+        return Texture(id, width, height, internal_format);
+    }
     GLsizei width() const { return width_; }
     GLsizei height() const { return height_; }
     GLenum format() const { return format_; }

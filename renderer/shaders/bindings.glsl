@@ -7,3 +7,4 @@
 #define BINDING_TEX_1 1
 #define BINDING_TEX_2 2
 #define BINDING_TEX_3 3
+#define BINDING_TERRAIN_NODES 1

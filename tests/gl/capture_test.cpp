@@ -59,11 +59,15 @@ TEST_CASE("gl: capture writes PNGs of the requested size and a valid stats JSON"
     CHECK(stats["backend"] == "osmesa");
     CHECK(stats["size"] == nlohmann::json::array({96, 54}));
     CHECK(stats["reference_copy_ms"].get<double>() > 0.0);
-    for (const char* pass : {"frame.clear", "debug.grid", "sky.background", "postfx.tonemap", "capture.readback"})
+    for (const char* pass : {"frame.clear", "terrain.gbuffer", "sky.background", "postfx.tonemap", "capture.readback"})
         CHECK_MESSAGE(contains(stats["passes_executed"], pass), pass);
     REQUIRE(stats["frames"].size() == 3);
     for (const auto& frame : stats["frames"]) {
         CHECK(frame["counters"]["nonfinite_pixels"] == 0);
+        CHECK(frame["counters"]["terrain.triangles"].get<double>() > 1000);
+        CHECK(frame["counters"]["terrain.nodes"].get<double>() > 0);
+        CHECK(frame["counters"]["terrain.draws"] == 1);
+        CHECK(frame["counters"].contains("terrain.select_ms"));
         CHECK(frame["gpu_ms"].get<double>() > 0.0);
         CHECK(frame["passes"].contains("postfx.tonemap"));
     }

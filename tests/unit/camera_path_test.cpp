@@ -1,6 +1,7 @@
 // Camera path parsing (errors located by line) and interpolation (through the keys, C1 in
 // time, shortest-arc yaw, no NaN on repeated positions).
 #include "app/camera_path.h"
+#include "terrain/heightmap.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -18,6 +19,8 @@ using vista::CameraKey;
 using vista::CameraPath;
 using vista::CameraPose;
 using vista::InputErrors;
+using vista::Heightmap;
+using vista::loadHeightmap;
 
 namespace {
 
@@ -311,21 +314,25 @@ TEST_CASE("camera path: empty and one-key paths") {
     CHECK(one.endTime() == 2.0);
 }
 
-TEST_CASE("camera path: the default path file loads cleanly") {
+TEST_CASE("camera path: the default path flies over the default island without touching it") {
     InputErrors errors;
     const CameraPath path = CameraPath::load(VISTA_ROOT_DIR "/data/paths/default.path", errors);
     for (const auto& e : errors) MESSAGE(e.str());
     REQUIRE(errors.empty());
     CHECK(path.keys().size() >= 6);
-    CHECK(path.endTime() - path.startTime() == doctest::Approx(30.0).epsilon(0.2));
+    // The island of config/default.ini: 8192 m across, 600 m height scale, sea level at y = 0.
+    const Heightmap map = loadHeightmap(VISTA_ROOT_DIR "/data/heightmaps/island.png", 0, 0, errors);
+    REQUIRE(errors.empty());
+    const double size = 8192.0, texel = size / double(map.width - 1);
     for (double t = path.startTime(); t <= path.endTime(); t += 0.1) {
         const CameraPose p = path.sample(t);
         CAPTURE(t);
         REQUIRE(finite(p));
-        CHECK(std::abs(p.position.x) <= 1600.0);
-        CHECK(std::abs(p.position.z) <= 1600.0);
-        CHECK(p.position.y >= 70.0);
-        CHECK(p.position.y <= 420.0);
+        double ground = std::max(0.0, -72.0 + 600.0 * map.sample((p.position.x + size / 2) / texel,
+                                                                  (p.position.z + size / 2) / texel));
+        CHECK(p.position.y - ground >= 100.0);
+        CHECK(std::abs(p.position.x) <= size / 2);
+        CHECK(std::abs(p.position.z) <= size / 2);
         CHECK(p.pitch_deg <= 0.0);
         CHECK(p.fov_deg >= 50.0);
         CHECK(p.fov_deg <= 70.0);

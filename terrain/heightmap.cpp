@@ -1,0 +1,342 @@
+// Heightmap loading and validation (OpenImageIO, raw .r16), 16-bit PNG output, and the
+// deterministic island generator used for the default scene's terrain.
+#include "terrain/heightmap.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <thread>
+
+// Compilers fuse a*b+c into one FMA where the target has it (aarch64, x86 with -march=native),
+// which changes the generator's bits between machines: keep every multiply and add separate.
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+namespace vista {
+namespace {
+
+std::string lowercase(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string texelName(std::size_t index, int width) {
+    return "texel (" + std::to_string(index % std::size_t(width)) + ", " + std::to_string(index / std::size_t(width)) + ")";
+}
+
+// Size limits shared by images and raw files; checked before any sample is allocated.
+std::string checkSize(int width, int height, std::uint64_t max_bytes) {
+    if (width < 2 || height < 2)
+        return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples; a heightmap needs at least 2x2";
+    std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * sizeof(float);
+    if (bytes > max_bytes)
+        return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples, " + std::to_string(bytes) +
+               " bytes as floats, over the limit of " + std::to_string(max_bytes) + " bytes";
+    return {};
+}
+
+// Little-endian uint16 samples; the file length must be exactly width*height*2 bytes so a
+// wrong raw_width/raw_height is caught instead of shearing the terrain.
+std::string loadRaw16(const std::filesystem::path& file, int width, int height, std::uint64_t max_bytes, Heightmap& map) {
+    if (width < 2 || height < 2)
+        return "a raw .r16 heightmap needs raw_width and raw_height (each >= 2); got " + std::to_string(width) + "x" +
+               std::to_string(height);
+    if (std::string why = checkSize(width, height, max_bytes); !why.empty()) return why;
+    std::error_code ec;
+    std::uint64_t actual = std::filesystem::file_size(file, ec);
+    if (ec) return "cannot read (" + ec.message() + ")";
+    std::uint64_t expected = std::uint64_t(width) * std::uint64_t(height) * 2;
+    if (actual != expected)
+        return "is " + std::to_string(actual) + " bytes but raw_width x raw_height = " + std::to_string(width) + "x" +
+               std::to_string(height) + " 16-bit samples need " + std::to_string(expected) + " bytes";
+    std::ifstream in(file, std::ios::binary);
+    std::vector<unsigned char> bytes(expected);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(expected))) return "cannot read all " + std::to_string(expected) + " bytes";
+    map.width = width;
+    map.height = height;
+    map.samples.resize(std::size_t(width) * std::size_t(height));
+    for (std::size_t i = 0; i < map.samples.size(); ++i)
+        map.samples[i] = float(unsigned(bytes[2 * i]) | unsigned(bytes[2 * i + 1]) << 8) / 65535.0f;
+    return {};
+}
+
+std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
+    // Alpha is not coverage here: ask for the stored RGB, not RGB premultiplied by alpha.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(file.string(), &config);
+    if (!in) return "cannot read (" + OIIO::geterror() + ")";
+    const OIIO::ImageSpec& spec = in->spec();
+    int channels = spec.nchannels;
+    // A grey image saved as RGB(A) is common; anything else with colour is a mistake.
+    if (channels != 1 && channels != 3 && channels != 4)
+        return "has " + std::to_string(channels) + " channels; a heightmap needs 1 (grey)";
+    if (std::string why = checkSize(spec.width, spec.height, max_bytes); !why.empty()) return why;
+    std::vector<float> samples(std::size_t(spec.width) * std::size_t(spec.height));
+    // One channel at a time, so an RGB(A) file needs two heightmaps of memory, not four.
+    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, samples.data())) return "cannot read (" + in->geterror() + ")";
+    if (channels > 1) {
+        std::vector<float> other(samples.size());
+        for (int c = 1; c < 3; ++c) {  // R, G, B; alpha is ignored
+            if (!in->read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, other.data())) return "cannot read (" + in->geterror() + ")";
+            for (std::size_t i = 0; i < samples.size(); ++i)
+                if (!(other[i] == samples[i]) && !(std::isnan(other[i]) && std::isnan(samples[i])))
+                    return "has " + std::to_string(channels) + " channels whose colours differ at " + texelName(i, spec.width) +
+                           "; a heightmap needs 1 (grey), or RGB with equal channels";
+        }
+    }
+    map.width = spec.width;
+    map.height = spec.height;
+    map.samples = std::move(samples);
+    return {};
+}
+
+}  // namespace
+
+Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
+                        std::uint64_t max_bytes) {
+    Heightmap map;
+    std::string why = lowercase(file.extension().string()) == ".r16" ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
+                                                                     : loadImage(file, max_bytes, map);
+    if (why.empty()) {
+        std::size_t bad = 0, first = 0;
+        for (std::size_t i = 0; i < map.samples.size(); ++i)
+            if (!std::isfinite(map.samples[i]) && bad++ == 0) first = i;
+        if (bad > 0)
+            why = "has a non-finite sample (" + std::to_string(map.samples[first]) + ") at " + texelName(first, map.width) +
+                  ", " + std::to_string(bad) + " non-finite in total; heights must be finite numbers";
+    }
+    if (!why.empty()) {
+        errors.push_back({file.string(), 0, why});
+        return {};
+    }
+    return map;
+}
+
+float Heightmap::sample(double x, double z) const {
+    if (width <= 0 || height <= 0) return 0.0f;
+    // NaN coordinates clamp to 0 rather than reaching an int conversion.
+    x = std::isnan(x) ? 0.0 : std::clamp(x, 0.0, double(width - 1));
+    z = std::isnan(z) ? 0.0 : std::clamp(z, 0.0, double(height - 1));
+    int x0 = int(x), z0 = int(z);
+    int x1 = std::min(x0 + 1, width - 1), z1 = std::min(z0 + 1, height - 1);
+    double fx = x - x0, fz = z - z0;
+    double top = at(x0, z0) + (at(x1, z0) - at(x0, z0)) * fx;
+    double bottom = at(x0, z1) + (at(x1, z1) - at(x0, z1)) * fx;
+    return float(top + (bottom - top) * fz);
+}
+
+std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map) {
+    if (map.width < 1 || map.height < 1 || map.samples.size() != std::size_t(map.width) * std::size_t(map.height))
+        return file.string() + ": heightmap is empty or its size does not match its samples";
+    std::vector<std::uint16_t> pixels(map.samples.size());
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        float v = map.samples[i];
+        pixels[i] = std::uint16_t(std::lround(double(std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f)) * 65535.0));
+    }
+    // Written under a temporary name and renamed, so a crash never leaves a truncated map.
+    std::filesystem::path tmp = file;
+    tmp += ".part";
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out) return file.string() + ": OpenImageIO has no png writer (" + OIIO::geterror() + ")";
+    OIIO::ImageSpec spec(map.width, map.height, 1, OIIO::TypeDesc::UINT16);
+    if (!out->open(tmp.string(), spec)) return file.string() + ": " + out->geterror();
+    bool ok = out->write_image(OIIO::TypeDesc::UINT16, pixels.data());
+    ok = out->close() && ok;
+    if (!ok) {
+        std::filesystem::remove(tmp);
+        return file.string() + ": " + out->geterror();
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) return file.string() + ": cannot rename from " + tmp.string() + " (" + ec.message() + ")";
+    return {};
+}
+
+// ---------------------------------------------------------------------------------------
+// Island generator. Only integer hashing, + - * /, sqrt and floor are used (all exactly
+// rounded in IEEE 754), so the same params give the same bits everywhere; rows are
+// independent, so the thread count does not matter either.
+namespace {
+
+std::uint32_t mix32(std::uint32_t x) {  // "lowbias32" integer hash (C. Wellons)
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+float smoothstep(float e0, float e1, float x) {
+    float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+// 2D gradient (Perlin) noise in about [-1, 1] with a quintic fade.
+float gradientNoise(float x, float y, std::uint32_t seed) {
+    static constexpr float s = 0.70710678f;
+    static constexpr float grad[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {s, s}, {-s, s}, {s, -s}, {-s, -s}};
+    float fx = std::floor(x), fy = std::floor(y);
+    std::int32_t ix = std::int32_t(fx), iy = std::int32_t(fy);
+    float dx = x - fx, dy = y - fy;
+    auto corner = [&](std::int32_t cx, std::int32_t cy, float px, float py) {
+        const float* g = grad[mix32(std::uint32_t(ix + cx) + mix32(std::uint32_t(iy + cy) ^ seed)) & 7];
+        return g[0] * px + g[1] * py;
+    };
+    float n00 = corner(0, 0, dx, dy), n10 = corner(1, 0, dx - 1, dy);
+    float n01 = corner(0, 1, dx, dy - 1), n11 = corner(1, 1, dx - 1, dy - 1);
+    float u = dx * dx * dx * (dx * (dx * 6 - 15) + 10), v = dy * dy * dy * (dy * (dy * 6 - 15) + 10);
+    float a = n00 + (n10 - n00) * u, b = n01 + (n11 - n01) * u;
+    return 1.4142f * (a + (b - a) * v);
+}
+
+// Each octave doubles the frequency and rotates (a 2x scaled rotation by ~37 deg, exact in
+// float) so the lattices of successive octaves do not line up into grid artefacts.
+void nextOctave(float& x, float& y) {
+    float nx = 1.6f * x - 1.2f * y + 19.1f;
+    y = 1.2f * x + 1.6f * y - 7.3f;
+    x = nx;
+}
+
+// fBm, gain 0.5, normalised to about [-1, 1].
+float fbm(float x, float y, int octaves, std::uint32_t seed) {
+    float sum = 0, amp = 1, norm = 0;
+    for (int i = 0; i < octaves; ++i) {
+        sum += amp * gradientNoise(x, y, seed + std::uint32_t(i) * 0x9e3779b9U);
+        norm += amp;
+        amp *= 0.5f;
+        nextOctave(x, y);
+    }
+    return sum / norm;
+}
+
+// Ridged multifractal (Musgrave) in [0, 1]: sharp crests where the noise crosses zero, and
+// each octave weighted by the one before, so detail gathers on the ridges, not the valleys.
+float ridged(float x, float y, int octaves, std::uint32_t seed) {
+    float sum = 0, amp = 1, norm = 0, weight = 1;
+    for (int i = 0; i < octaves; ++i) {
+        float s = 1.0f - std::abs(gradientNoise(x, y, seed + std::uint32_t(i) * 0x9e3779b9U));
+        s = s * s * weight;
+        weight = std::clamp(s * 2.0f, 0.0f, 1.0f);
+        sum += amp * s;
+        norm += amp;
+        amp *= 0.5f;
+        nextOctave(x, y);
+    }
+    return sum / norm;
+}
+
+// Raw height before remapping: 0 is the shoreline, negative is sea. p in [-1, 1]^2.
+float islandHeight(float px, float py, const IslandParams& prm, std::uint32_t seed) {
+    auto sub = [&](std::uint32_t k) { return mix32(seed ^ (k * 0x85ebca6bU)); };  // independent noise fields
+    // Domain warp: bends the coast and the ridges so nothing looks radial or gridded.
+    float wx = fbm(1.3f * px + 3.1f, 1.3f * py - 1.7f, 4, sub(1)), wy = fbm(1.3f * px - 4.3f, 1.3f * py + 2.9f, 4, sub(2));
+    float qx = px + 0.22f * wx, qy = py + 0.22f * wy;
+    // Distance to the coast in units of the falloff radius (1 = shoreline), made ragged with
+    // noise (large bays and headlands, then smaller coves) so the island is not a circle.
+    float coast = fbm(1.6f * qx, 1.6f * qy, 7, sub(3));
+    // The island is stretched along an axis picked by the seed (a unit vector made from two
+    // hashed numbers, not sin/cos, whose last bits differ between C libraries).
+    float ax = float(mix32(seed) >> 8) / 8388608.0f - 1.0f, ay = float(mix32(seed + 1) >> 8) / 8388608.0f - 1.0f;
+    float alen = std::sqrt(ax * ax + ay * ay) + 1e-6f;
+    ax /= alen;
+    ay /= alen;
+    float along = (qx * ax + qy * ay) / 1.2f, across = (qy * ax - qx * ay) / 0.85f;
+    float d = std::sqrt(along * along + across * across) / prm.falloff + 0.45f * coast;
+    // Gentle coastal plain and shelf: rises slowly inland, sinks slowly out to sea.
+    float h = 0.20f * (1.0f - d);
+    // Rolling hills everywhere on land, fading near the shore so beaches stay wide.
+    float hills = fbm(4.0f * qx, 4.0f * qy, prm.octaves, sub(4));
+    float inland = smoothstep(1.0f, 0.2f, d);
+    h += (0.015f + 0.05f * inland) * hills;
+    // Mountains: the interior, more in some parts than others, a mix of fBm and ridges.
+    float ranges = smoothstep(-0.3f, 0.3f, fbm(1.5f * qx + 7.7f, 1.5f * qy, 3, sub(5)) + 0.1f);
+    // Ridges see less of the warp: strongly warped crests swirl instead of forming ranges.
+    float crest = ridged(2.2f * (px + 0.06f * wx), 2.2f * (py + 0.06f * wy), prm.octaves, sub(6));
+    float mountain = prm.ridge * 2.0f * crest * crest * crest + (1.0f - prm.ridge) * (0.5f + 0.5f * hills);
+    float interior = smoothstep(0.95f, 0.3f, d);
+    h += interior * (0.25f + 0.75f * ranges) * mountain;
+    // Sea cliffs along parts of the coast: the land just above the shoreline steps up.
+    float cliffs = smoothstep(0.2f, 0.45f, fbm(2.5f * qx - 11.0f, 2.5f * qy + 5.0f, 3, sub(7)));
+    h += cliffs * 0.08f * smoothstep(0.0f, 0.006f, h);
+    // The map border is always open sea.
+    float border = smoothstep(0.88f, 0.98f, std::max(std::abs(px), std::abs(py)));
+    return h + border * (std::min(h, -0.06f) - h);
+}
+
+// Spreads rows over the cores; each row is written by one thread only.
+template <class F>
+void parallelRows(int rows, F&& rowFn) {
+    int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+        pool.emplace_back([&, t] {
+            for (int z = t; z < rows; z += threads) rowFn(z);
+        });
+    for (auto& th : pool) th.join();
+}
+
+// Piecewise-linear remap: [min, sea] -> [0, 0.12], [sea, max] -> [0.12, 1].
+void remap(std::vector<float>& h, float sea) {
+    auto [lo, hi] = std::minmax_element(h.begin(), h.end());
+    float mn = std::min(*lo, sea - 1e-6f), mx = std::max(*hi, sea + 1e-6f);
+    for (float& v : h) v = v < sea ? 0.12f * (v - mn) / (sea - mn) : 0.12f + 0.88f * (v - sea) / (mx - sea);
+}
+
+// Thermal erosion: wherever the drop to a neighbour exceeds the talus threshold, half of the
+// largest excess slides down, shared among the lower neighbours by how far they are over it.
+// Sequential in place, so the order (and the result) is fixed.
+void thermalErosion(std::vector<float>& h, int n, float talus, int passes) {
+    static constexpr int dx[8] = {-1, 0, 1, -1, 1, -1, 0, 1}, dz[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+    float limit[8];
+    for (int k = 0; k < 8; ++k) limit[k] = (dx[k] != 0 && dz[k] != 0) ? talus * 1.41421356f : talus;
+    for (int pass = 0; pass < passes; ++pass)
+        for (int z = 1; z < n - 1; ++z)
+            for (int x = 1; x < n - 1; ++x) {
+                float* c = &h[std::size_t(z) * std::size_t(n) + std::size_t(x)];
+                float excess[8], total = 0, largest = 0;
+                for (int k = 0; k < 8; ++k) {
+                    float e = *c - c[dz[k] * n + dx[k]] - limit[k];
+                    excess[k] = e > 0 ? e : 0;
+                    total += excess[k];
+                    largest = std::max(largest, excess[k]);
+                }
+                if (total <= 0) continue;
+                float moved = 0.5f * largest;
+                for (int k = 0; k < 8; ++k) c[dz[k] * n + dx[k]] += moved * excess[k] / total;
+                *c -= moved;
+            }
+}
+
+}  // namespace
+
+Heightmap generateIsland(const IslandParams& params) {
+    Heightmap map;
+    int n = std::max(params.size, 2);
+    map.width = map.height = n;
+    map.samples.resize(std::size_t(n) * std::size_t(n));
+    std::uint32_t seed = mix32(params.seed + 0x6a09e667U);
+    parallelRows(n, [&](int z) {
+        for (int x = 0; x < n; ++x) {
+            float px = 2.0f * float(x) / float(n - 1) - 1.0f, py = 2.0f * float(z) / float(n - 1) - 1.0f;
+            map.samples[std::size_t(z) * std::size_t(n) + std::size_t(x)] = islandHeight(px, py, params, seed);
+        }
+    });
+    remap(map.samples, 0.0f);
+    // Talus of ~40 degrees (tan = 0.84) under the intended mapping (8192 m across, value 1 =
+    // 600 m), per texel, so the look does not depend on the resolution.
+    float talus = 0.84f * (8192.0f / float(n - 1)) / 600.0f;
+    thermalErosion(map.samples, n, talus, params.erosion_passes);
+    // Erosion lowers the peaks and fills the sea floor a little: restore 0 .. 0.12 .. 1.
+    remap(map.samples, 0.12f);
+    return map;
+}
+
+}  // namespace vista

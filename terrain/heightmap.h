@@ -1,0 +1,48 @@
+// Heightmaps: loading (8/16-bit PNG, TIFF, float EXR through OpenImageIO; raw .r16 with an
+// explicit size), validation with errors that name the file and the first bad texel, and
+// a deterministic island generator (fBm + ridged noise, island falloff, erosion).
+#pragma once
+
+#include "config/input_error.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+// Samples in row-major order, row z = 0 first (north, -z in the world), x = 0 first (west).
+// Integer formats are normalised to [0, 1]; float formats keep their values.
+struct Heightmap {
+    int width = 0, height = 0;
+    std::vector<float> samples;
+
+    float at(int x, int z) const { return samples[std::size_t(z) * std::size_t(width) + std::size_t(x)]; }
+    // Bilinear sample at continuous texel coordinates, clamped to the edges.
+    float sample(double x, double z) const;
+};
+
+// Loads and validates. raw_width/raw_height are required for .r16 (little-endian uint16)
+// and ignored otherwise. On failure returns an empty Heightmap and appends errors (file,
+// what is wrong, what is accepted). max_bytes bounds the memory a heightmap may take.
+Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
+                        std::uint64_t max_bytes = std::uint64_t(4) << 30);
+
+// Writes a 16-bit single-channel PNG of values clamped to [0, 1]. "" on success, else why.
+std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map);
+
+struct IslandParams {
+    int size = 1025;          // samples per side (any size >= 2; 2^n + 1 suits the quadtree)
+    std::uint32_t seed = 1;
+    int octaves = 9;
+    float ridge = 0.45f;      // 0: plain fBm, 1: ridged noise only
+    float falloff = 0.72f;    // radius (fraction of half the map) where the island meets the sea
+    int erosion_passes = 4;   // thermal erosion iterations
+};
+
+// A deterministic island in [0, 1]: sea floor near 0, shoreline around 0.12, peaks near 1.
+// Same params, same bits on every machine.
+Heightmap generateIsland(const IslandParams& params);
+
+}  // namespace vista

@@ -1,0 +1,171 @@
+// CDLOD terrain: a half-node grid mesh drawn once per selected quadrant (instanced), heights
+// from the height texture, each vertex morphing toward the next coarser grid; per-pixel
+// normals from the normal map, height/slope material splatting with detail normals.
+// Interim shading: forward sun + sky ambient into the HDR target (the lighting issue moves
+// this to the G-buffer).
+#include "../../renderer/shaders/common.glsl"
+
+struct Instance {
+    vec4 a;  // camera-relative x, z of the quadrant's min corner (m), grid step in x (m), LOD level
+    vec4 b;  // morph constants (end / (end - start), 1 / (end - start)), grid step in z (m), unused
+};
+layout(std430, binding = BINDING_TERRAIN_NODES) readonly buffer Instances { Instance u_instances[]; };
+layout(binding = BINDING_TEX_0) uniform sampler2D u_height;    // heightmap samples (R32F)
+layout(binding = BINDING_TEX_1) uniform sampler2D u_normals;   // world normals (RGBA8 snorm)
+
+layout(location = 0) uniform int u_quads;          // quads per instance side (half a node)
+layout(location = 1) uniform vec2 u_map_min;       // camera-relative x, z of texel (0, 0) (m)
+layout(location = 2) uniform vec2 u_texel_m;       // metres between samples in x, z
+layout(location = 3) uniform vec2 u_height_map;    // height = offset + scale * sample: (scale, offset - camera y)
+layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of the last texel (m)
+
+#ifdef VERTEX_SHADER
+out vec3 v_rel;        // camera-relative position (m)
+out vec2 v_uv;         // heightmap texture coordinates
+out float v_sample;    // heightmap value (for material bands)
+out vec2 v_grid;       // grid coordinates within the instance (wireframe view)
+flat out vec2 v_lod;   // level, unused
+out float v_morph;
+
+vec2 uvAt(vec2 rel_xz) {
+    return ((rel_xz - u_map_min) / u_texel_m + 0.5) / vec2(textureSize(u_height, 0));
+}
+
+void main() {
+    Instance inst = u_instances[gl_InstanceID];
+    int side = u_quads + 1;
+    vec2 grid = vec2(gl_VertexID % side, gl_VertexID / side);
+    vec2 step_m = vec2(inst.a.z, inst.b.z);
+    vec2 xz = inst.a.xy + grid * step_m;
+    float h = u_height_map.y + u_height_map.x * textureLod(u_height, uvAt(xz), 0.0).r;
+    // Strugar's morph: distance to the unmorphed vertex, odd vertices slide onto the
+    // coarser grid (toward their even neighbour) as morph goes 0 -> 1.
+    float dist = length(vec3(xz.x, h, xz.y));
+    float morph = 1.0 - clamp(inst.b.x - dist * inst.b.y, 0.0, 1.0);
+    vec2 odd = fract(grid * 0.5) * 2.0;
+    grid -= odd * morph;
+    // Nodes may reach past the map's edge: their vertices stop at it (as cdlod.cpp's replica).
+    xz = clamp(inst.a.xy + grid * step_m, u_map_min, u_map_max);
+    vec2 uv = uvAt(xz);
+    float s = textureLod(u_height, uv, 0.0).r;
+    h = u_height_map.y + u_height_map.x * s;
+    v_rel = vec3(xz.x, h, xz.y);
+    v_uv = uv;
+    v_sample = s;
+    v_grid = grid;
+    v_lod = vec2(inst.a.w, 0.0);
+    v_morph = morph;
+    gl_Position = u_view_proj * vec4(v_rel, 1.0);
+}
+#endif
+
+#ifdef FRAGMENT_SHADER
+layout(binding = BINDING_TEX_2) uniform sampler2DArray u_albedo;  // sRGB albedo, A = roughness
+layout(binding = BINDING_TEX_3) uniform sampler2DArray u_detail;  // tangent-space normals
+
+layout(location = 4) uniform vec4 u_bands;     // sand_top, grass_top, snow_start, band_blend
+layout(location = 5) uniform vec4 u_material;  // band_jitter, rock_slope, 1 / texture_scale_m, detail_distance_m
+layout(location = 6) uniform vec2 u_tex_offset;  // camera x, z modulo the texture period (m)
+layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 morph, 3 normals
+layout(location = 8) uniform int u_wireframe;
+
+in vec3 v_rel;
+in vec2 v_uv;
+in float v_sample;
+in vec2 v_grid;
+flat in vec2 v_lod;
+in float v_morph;
+layout(location = 0) out vec4 o_color;
+
+const int SAND = 0, GRASS = 1, ROCK = 2, SNOW = 3, DIRT = 4;
+
+vec3 lodColor(float level) {
+    const vec3 colors[8] = vec3[](vec3(1, 0.2, 0.2), vec3(1, 0.6, 0.1), vec3(0.9, 0.9, 0.1), vec3(0.3, 0.9, 0.2),
+                                  vec3(0.1, 0.8, 0.9), vec3(0.2, 0.4, 1), vec3(0.7, 0.3, 1), vec3(1, 0.4, 0.8));
+    return colors[int(level) % 8];
+}
+
+// Albedo (linear) + roughness and the detail normal of one layer, planar in x/z.
+void layerSample(int layer, vec2 uv, out vec4 albedo, out vec3 detail) {
+    albedo = texture(u_albedo, vec3(uv, float(layer)));
+    detail = texture(u_detail, vec3(uv, float(layer))).xyz * 2.0 - 1.0;
+}
+
+void main() {
+    vec3 n = safeNormalize(texture(u_normals, v_uv).xyz);
+    float dist = length(v_rel);
+    if (u_terrain_view == 1 || u_terrain_view == 2 || u_terrain_view == 3) {
+        vec3 c = n * 0.5 + 0.5;
+        if (u_terrain_view == 1) c = lodColor(v_lod.x);
+        if (u_terrain_view == 2) c = vec3(v_morph, 1.0 - v_morph, 0.2);
+        o_color = vec4(c * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), 1.0);
+    } else {
+        vec2 world_xz = v_rel.xz + u_tex_offset;
+        vec2 uv = world_xz * u_material.z;
+        // Height bands (001): L = sum of clamp((h - start_i) / blend, 0, 1); layer floor(L)
+        // blends into the next by fract(L). The height is jittered to break the bands.
+        vec4 a0;
+        vec3 d0;
+        layerSample(ROCK, world_xz * (u_material.z * 0.031), a0, d0);
+        float h = v_sample + (a0.g - 0.45) * 2.0 * u_material.x;
+        float bands = clamp((h - u_bands.x) / u_bands.w, 0.0, 1.0) + clamp((h - u_bands.y) / u_bands.w, 0.0, 1.0) +
+                      clamp((h - u_bands.z) / u_bands.w, 0.0, 1.0);
+        const int order[4] = int[](SAND, GRASS, ROCK, SNOW);
+        int lower = int(min(floor(bands), 3.0));
+        float t = bands - float(lower);
+        vec4 albedo_a, albedo_b;
+        vec3 detail_a, detail_b;
+        layerSample(order[lower], uv, albedo_a, detail_a);
+        layerSample(order[min(lower + 1, 3)], uv, albedo_b, detail_b);
+        vec4 albedo = mix(albedo_a, albedo_b, t);
+        vec3 detail = mix(detail_a, detail_b, t);
+        // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar so cliffs
+        // do not stretch. Snow holds on flatter ground only.
+        float rock = smoothstep(u_material.y + 0.06, u_material.y - 0.06, n.y);
+        float dirt = smoothstep(u_material.y + 0.18, u_material.y + 0.06, n.y) * (1.0 - rock) * step(float(lower), 1.5);
+        if (dirt > 0.0) {
+            vec4 da;
+            vec3 dd;
+            layerSample(DIRT, uv, da, dd);
+            albedo = mix(albedo, da, dirt);
+            detail = mix(detail, dd, dirt);
+        }
+        if (rock > 0.0) {
+            vec3 w = pow(abs(n), vec3(4.0));
+            w /= w.x + w.y + w.z;
+            vec3 p = (v_rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
+            vec4 ax, ay, az;
+            vec3 dx, dy, dz;
+            layerSample(ROCK, p.zy, ax, dx);
+            layerSample(ROCK, p.xz, ay, dy);
+            layerSample(ROCK, p.xy, az, dz);
+            albedo = mix(albedo, ax * w.x + ay * w.y + az * w.z, rock);
+            detail = mix(detail, dx * w.x + dy * w.y + dz * w.z, rock);
+        }
+        // Detail normals through the in-shader tangent frame (001: texture coordinates follow
+        // x/z), fading out with distance.
+        float fade = 1.0 - smoothstep(u_material.w * 0.5, u_material.w, dist);
+        vec3 tangent = safeNormalize(cross(n, vec3(0.0, 0.0, 1.0)));
+        vec3 bitangent = safeNormalize(vec3(0.0, -n.z, n.y));
+        vec3 nd = safeNormalize(tangent * detail.x + bitangent * detail.y + n * max(detail.z, 0.05));
+        vec3 shading_n = safeNormalize(mix(n, nd, fade));
+
+        vec3 l = u_sun_dir.xyz;
+        vec3 v = -v_rel / max(dist, 1e-6);
+        vec3 hv = safeNormalize(l + v);
+        float ndl = max(dot(shading_n, l), 0.0);
+        float rough = clamp(albedo.a, 0.05, 1.0);
+        float spec_power = 2.0 / (rough * rough * rough * rough) - 2.0;
+        float spec = pow(max(dot(shading_n, hv), 0.0), max(spec_power, 1.0)) * (spec_power + 8.0) / 25.13 * 0.04;
+        vec3 sky = mix(vec3(0.10, 0.09, 0.08), vec3(0.30, 0.38, 0.50), shading_n.y * 0.5 + 0.5);
+        vec3 sun = vec3(1.0, 0.96, 0.9) * u_sun_dir.w * ndl * step(0.0, u_sun_dir.y + 0.05);
+        vec3 color = albedo.rgb * (sun + sky * max(u_sun_dir.w, 0.05) * 0.35) + sun * spec;
+        o_color = vec4(color, 1.0);
+    }
+    if (u_wireframe != 0) {
+        vec2 g = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
+        float line = 1.0 - min(min(g.x, g.y), 1.0);
+        o_color.rgb = mix(o_color.rgb, vec3(0.0), line * 0.8);
+    }
+}
+#endif

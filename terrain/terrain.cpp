@@ -1,0 +1,195 @@
+// Terrain loading (textures, quadtree, buffers: all once) and the per-frame selection/draw.
+#include "terrain/terrain.h"
+
+#include "renderer/bindings.h"
+#include "terrain/materials.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace vista {
+namespace {
+
+// A selection larger than this is truncated (and says so): far beyond any sane LOD setting.
+constexpr std::size_t kMaxInstances = 1 << 16;
+
+gl::Texture materialArray(const std::vector<std::uint8_t>& pixels, int size, int layers, GLenum format, const char* name) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    int levels = 1 + int(std::floor(std::log2(double(size))));
+    glTextureStorage3D(id, levels, format, size, size, layers);
+    glTextureSubImage3D(id, 0, 0, 0, 0, size, size, layers, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glGenerateTextureMipmap(id);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glObjectLabel(GL_TEXTURE, id, -1, name);
+    return gl::Texture::adopt(id, size, size, format);
+}
+
+// Indices of a (q+1)^2-vertex grid of q x q quads; the vertex shader derives positions
+// from gl_VertexID, so there is no vertex buffer.
+std::vector<std::uint32_t> gridIndices(int q) {
+    std::vector<std::uint32_t> indices;
+    indices.reserve(std::size_t(q) * std::size_t(q) * 6);
+    auto at = [q](int x, int z) { return std::uint32_t(z * (q + 1) + x); };
+    for (int z = 0; z < q; ++z)
+        for (int x = 0; x < q; ++x) {
+            std::uint32_t a = at(x, z), b = at(x + 1, z), c = at(x, z + 1), d = at(x + 1, z + 1);
+            indices.insert(indices.end(), {a, c, b, b, c, d});
+        }
+    return indices;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() {
+    return {{"terrain/shaders/terrain.glsl", {}}, {"terrain/shaders/normals.glsl", {}}};
+}
+
+std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    if (s.grid % 4 != 0) {
+        errors.push_back({"[terrain] grid", 0, "grid = " + std::to_string(s.grid) + " is not accepted; accepted: a multiple of 4 in 4..256"});
+        return nullptr;
+    }
+    std::unique_ptr<Terrain> t(new Terrain);
+    t->source_ = s;
+    t->map_ = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
+    if (t->map_.samples.empty()) return nullptr;
+    const Heightmap& map = t->map_;
+    t->mapping_ = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
+    t->tree_ = MinMaxQuadtree(map, t->mapping_, s.grid);
+
+    t->height_ = gl::Texture::create2D(map.width, map.height, GL_R32F, 1, "terrain heights");
+    glTextureSubImage2D(t->height_.id(), 0, 0, 0, map.width, map.height, GL_RED, GL_FLOAT, map.samples.data());
+    t->normals_ = gl::Texture::create2D(map.width, map.height, GL_RGBA8_SNORM, 1, "terrain normals");
+    ShaderLibrary::Program* normals = shaders.get("terrain/shaders/normals.glsl");
+    if (!normals) {
+        errors.push_back({"terrain/shaders/normals.glsl", 0, shaders.lastError()});
+        return nullptr;
+    }
+    glUseProgram(normals->id());
+    glProgramUniform2f(normals->id(), 0, float(t->mapping_.texelSizeX()), float(t->mapping_.texelSizeZ()));
+    glProgramUniform1f(normals->id(), 1, s.height_scale_m);
+    glBindTextureUnit(binding::kTex0, t->height_.id());
+    glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
+    glDispatchCompute(GLuint((map.width + 15) / 16), GLuint((map.height + 15) / 16), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    MaterialImages materials = generateMaterialImages();
+    t->albedo_ = materialArray(materials.albedo, materials.size, materials.layers, GL_SRGB8_ALPHA8, "terrain albedo");
+    t->detail_ = materialArray(materials.normal, materials.size, materials.layers, GL_RGBA8, "terrain detail normals");
+
+    std::vector<std::uint32_t> indices = gridIndices(s.grid / 2);
+    t->index_count_ = GLsizei(indices.size());
+    t->grid_indices_ = gl::Buffer::create(GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), 0, "terrain grid");
+    t->vao_ = gl::createVertexArray("terrain grid");
+    glVertexArrayElementBuffer(t->vao_.id(), t->grid_indices_.id());
+    t->instance_buffer_ = gl::Buffer::create(GLsizeiptr(kMaxInstances * sizeof(TerrainInstance)), nullptr,
+                                             GL_DYNAMIC_STORAGE_BIT, "terrain instances");
+    t->instances_.reserve(kMaxInstances);
+    return t;
+}
+
+bool Terrain::matches(const TerrainSettings& s) const {
+    return s.heightmap == source_.heightmap && s.raw_width == source_.raw_width && s.raw_height == source_.raw_height &&
+           s.size_m == source_.size_m && s.height_scale_m == source_.height_scale_m &&
+           s.height_offset_m == source_.height_offset_m && s.grid == source_.grid;
+}
+
+double Terrain::heightAt(double x, double z) const {
+    double tx = (x - source_.origin.x + mapping_.size_m * 0.5) / mapping_.texelSizeX();
+    double tz = (z - source_.origin.z + mapping_.size_m * 0.5) / mapping_.texelSizeZ();
+    return source_.origin.y + mapping_.height_offset_m + mapping_.height_scale_m * map_.sample(tx, tz);
+}
+
+const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s) {
+    auto start = std::chrono::steady_clock::now();
+    source_.origin = s.origin;  // moving the terrain needs no reload
+    camera_ = camera;
+    lod_.base_range_m = s.base_range_m;
+    lod_.range_ratio = s.range_ratio;
+    lod_.morph_start = s.morph_start;
+    // The mapping is centred on the origin: select with the camera relative to the terrain.
+    selectNodes(tree_, mapping_, lod_, camera - s.origin, frustumFromViewProj(view_proj), selection_);
+    instances_.clear();
+    glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera.x - s.origin.x, camera.z - s.origin.z);
+    for (const SelectedNode& node : selection_.nodes) {
+        // The mesh is a half-node grid: a whole node is drawn as its four quadrants, a
+        // partial node (one quadrant of a level-L node, see SelectedNode) as one.
+        bool whole = node.node_level == node.level;
+        glm::dvec2 step = node.size_m * (whole ? 1.0 : 2.0) / double(s.grid);
+        glm::dvec2 half = step * double(s.grid / 2);
+        glm::dvec2 c = selection_.morph_consts[std::size_t(node.level)];
+        for (int q = 0; q < (whole ? 4 : 1) && instances_.size() < kMaxInstances; ++q) {
+            glm::dvec2 o = node.origin_rel + glm::dvec2(q & 1, q >> 1) * half;
+            if (o.x >= map_max.x || o.y >= map_max.y) continue;  // a quadrant wholly past the map's edge
+            instances_.push_back({glm::vec4(float(o.x), float(o.y), float(step.x), float(node.level)),
+                                  glm::vec4(float(c.x), float(c.y), float(step.y), 0.0f)});
+        }
+    }
+    counters_.nodes = std::int64_t(selection_.nodes.size());
+    counters_.draws = instances_.empty() ? 0 : 1;
+    counters_.triangles = std::int64_t(instances_.size()) * (index_count_ / 3);
+    counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return selection_;
+}
+
+void Terrain::draw(const TerrainSettings& s, GLuint program) const {
+    if (instances_.empty()) return;
+    glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
+    glm::dvec3 rel = camera_ - s.origin;  // camera relative to the map centre
+    glProgramUniform1i(program, 0, s.grid / 2);
+    glProgramUniform2f(program, 1, float(-mapping_.size_m * 0.5 - rel.x), float(-mapping_.size_m * 0.5 - rel.z));
+    glProgramUniform2f(program, 2, float(mapping_.texelSizeX()), float(mapping_.texelSizeZ()));
+    glProgramUniform2f(program, 3, float(mapping_.height_scale_m), float(mapping_.height_offset_m - rel.y));
+    glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
+    glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
+    glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
+    glProgramUniform1i(program, 7, int(s.view));
+    glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
+    glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
+    glBindTextureUnit(binding::kTex0, height_.id());
+    glBindTextureUnit(binding::kTex1, normals_.id());
+    glBindTextureUnit(binding::kTex2, albedo_.id());
+    glBindTextureUnit(binding::kTex3, detail_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
+    glBindVertexArray(vao_.id());
+    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances_.size()));
+}
+
+std::size_t Terrain::memoryBytes() const {
+    std::size_t texels = std::size_t(map_.width) * std::size_t(map_.height);
+    return tree_.memoryBytes() + map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
+           std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size());
+}
+
+void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
+                    SceneTargets& targets) {
+    struct Data {
+        SceneTargets t;
+    };
+    terrain.select(rc.view.position, glm::dmat4(rc.matrices.view_proj), s);
+    const Data& d = graph.addPass<Data>("terrain.gbuffer",
+        [&](PassBuilder& b, Data& data) {
+            data.t.hdr = b.write(targets.hdr);
+            data.t.depth = b.write(targets.depth);
+        },
+        [&rc, &terrain, &s](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.t.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.t.hdr)}, ctx.texture(data.t.depth)), desc.width, desc.height);
+            GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl")->id();
+            glUseProgram(program);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_TRUE);
+            terrain.draw(s, program);
+            glDisable(GL_DEPTH_TEST);
+        });
+    targets = d.t;
+}
+
+}  // namespace vista

@@ -1,0 +1,82 @@
+// The terrain of a scene: heightmap, min/max quadtree, GPU textures (heights, normals,
+// materials) and buffers, all made once at load; per frame a CDLOD selection for the main
+// camera, reusable for shadow passes, and one instanced draw.
+#pragma once
+
+#include "config/input_error.h"
+#include "config/settings.h"
+#include "renderer/camera.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
+#include "terrain/cdlod.h"
+
+#include <memory>
+
+namespace vista {
+
+struct TerrainCounters {
+    std::int64_t triangles = 0, nodes = 0, draws = 0;
+    double select_ms = 0.0;
+};
+
+// One quadrant of a node at its LOD level: what the shader draws per instance.
+struct TerrainInstance {
+    glm::vec4 a;  // camera-relative x, z of the min corner (m), grid step in x (m), level
+    glm::vec4 b;  // morph constants of the level, grid step in z (m), unused
+};
+
+class Terrain {
+public:
+    // Loads everything the settings name; on bad input returns null with errors (file, what
+    // is accepted). Needs a current GL context and the shader library.
+    static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
+
+    // True when s names the same data and mapping (no reload needed).
+    bool matches(const TerrainSettings& s) const;
+
+    // Ground height (m) at world x/z, bilinear; clamped to the map's edge outside it.
+    double heightAt(double x, double z) const;
+
+    // Selects nodes for a camera (world position, camera-relative view-projection) and fills
+    // the instance list; the selection can be reused for shadow passes.
+    const Selection& select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s);
+    const std::vector<TerrainInstance>& instances() const { return instances_; }
+    const TerrainCounters& counters() const { return counters_; }
+
+    // Draws the current instances with the bound program's terrain uniforms set.
+    void draw(const TerrainSettings& s, GLuint program) const;
+
+    const TerrainMapping& mapping() const { return mapping_; }
+    const MinMaxQuadtree& quadtree() const { return tree_; }
+    const Heightmap& heightmap() const { return map_; }
+    std::size_t memoryBytes() const;
+    GLuint heightTexture() const { return height_.id(); }
+
+private:
+    Terrain() = default;
+
+    TerrainSettings source_;  // what was loaded (file, mapping)
+    Heightmap map_;
+    TerrainMapping mapping_;
+    MinMaxQuadtree tree_;
+    LodSettings lod_;
+    Selection selection_;
+    std::vector<TerrainInstance> instances_;
+    TerrainCounters counters_;
+    glm::dvec3 camera_{0.0};
+
+    gl::Texture height_, normals_, albedo_, detail_;
+    gl::Buffer grid_indices_, instance_buffer_;
+    gl::VertexArray vao_;
+    GLsizei index_count_ = 0;
+    std::size_t max_instances_ = 0;
+};
+
+// "terrain.gbuffer": the selected nodes into the scene targets (interim: forward-shaded HDR).
+void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
+                    SceneTargets& targets);
+
+std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms();
+
+}  // namespace vista
