@@ -232,12 +232,27 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
         if (k <= levels - 2) need = std::max(need, bounds(k).y);
         base = std::max(base, need / (std::pow(ratio, k - 1) * (ratio - 1.0)));
     }
+    // The top level has no coarser level to hand over to, so its range reaches the farthest
+    // corner of the map: the whole map is always drawn, however few levels the tree has.
+    double half = mapping.size_m * 0.5, low = tree.minMax(levels - 1, 0, 0).x, high = low;
+    glm::ivec2 top_count = tree.nodesPerSide(levels - 1);
+    for (int z = 0; z < top_count.y; ++z)
+        for (int x = 0; x < top_count.x; ++x) {
+            glm::vec2 mm = tree.minMax(levels - 1, x, z);
+            low = std::min(low, double(mm.x));
+            high = std::max(high, double(mm.y));
+        }
+    glm::dvec3 far(std::abs(camera.x) + half, std::max(std::abs(camera.y - low), std::abs(camera.y - high)),
+                   std::abs(camera.z) + half);
     double prev = 0.0;
     for (int level = 0; level < levels; ++level) {
         double end = base * std::pow(ratio, level);
+        if (level == levels - 1) end = std::max(end, glm::length(far) * 1.001);
         double start = level == 0 ? m * end : prev + std::max(m * (end - prev), bounds(level - 1).x);
         out.ranges.push_back(end);
-        out.morph_consts.push_back({end / (end - start), 1.0 / (end - start)});
+        // The top level has no coarser grid to morph into: k stays 0 (c = (1, 0)).
+        out.morph_consts.push_back(level == levels - 1 ? glm::dvec2(1.0, 0.0)
+                                                       : glm::dvec2(end / (end - start), 1.0 / (end - start)));
         prev = end;
     }
 
@@ -262,8 +277,12 @@ glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const Ter
     glm::dvec2 c = sel.morph_consts[std::size_t(node.level)];
     double k = 1.0 - std::clamp(c.x - d * c.y, 0.0, 1.0);
     if (morph_k) *morph_k = k;
-    g -= glm::fract(g * 0.5) * 2.0 * k;  // odd vertices slide onto their even neighbour below
-    rel = glm::clamp(node.origin_rel + g * step, map_min, map_min + mapping.size_m);
+    // Odd vertices slide onto their even neighbour below. A vertex at or past the map's far
+    // edge keeps its place on that axis, so the border never pulls inward.
+    glm::dvec2 map_max = map_min + mapping.size_m;
+    glm::dvec2 inside(rel.x < map_max.x ? 1.0 : 0.0, rel.y < map_max.y ? 1.0 : 0.0);
+    g -= glm::fract(g * 0.5) * 2.0 * k * inside;
+    rel = glm::clamp(node.origin_rel + g * step, map_min, map_max);
     return rel + glm::dvec2(camera.x, camera.z);
 }
 

@@ -101,7 +101,8 @@ struct SelectedNode {
 struct Selection {
     std::vector<SelectedNode> nodes;
     // Per level: morph distances (metres) as Strugar's constants: morphK = 1 - clamp(c.x - d * c.y, 0, 1),
-    // with c.x = end / (end - start), c.y = 1 / (end - start); end = ranges[L],
+    // with c.x = end / (end - start), c.y = 1 / (end - start); the top level never morphs
+    // (c = (1, 0)) and reaches the farthest corner of the map; end = ranges[L],
     // start = ranges[L-1] + max(morph_start * (ranges[L] - ranges[L-1]), D_{L-1}); for L = 0: morph_start * ranges[0].
     std::vector<glm::dvec2> morph_consts;
     std::vector<double> ranges;  // per level, after raising the base range
@@ -120,7 +121,8 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
 // step = size_m * 2^(level - node_level) / grid. With g = (gx, gz) and rel = origin_rel + g * step:
 //   h = height_offset + height_scale * bilinear(map, texel coords of rel) - camera.y
 //   d = length(rel.x, h, rel.y);  k = 1 - clamp(c.x - d * c.y, 0, 1)  (c = morph_consts[level])
-//   g -= fract(g / 2) * 2 * k;  rel = clamp(origin_rel + g * step, map min, map max) (camera-relative)
+//   g -= fract(g / 2) * 2 * k * (rel < map max);  rel = clamp(origin_rel + g * step, map min, map max)
+//   (camera-relative; a vertex at or past the far map edge does not morph on that axis)
 // Bilinear sampling matches GL_LINEAR with clamp-to-edge on texel centres.
 glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const TerrainMapping& mapping,
                        const Heightmap& map, const glm::dvec3& camera, int grid, int gx, int gz,

@@ -42,7 +42,8 @@ void main() {
     // coarser grid (toward their even neighbour) as morph goes 0 -> 1.
     float dist = length(vec3(xz.x, h, xz.y));
     float morph = 1.0 - clamp(inst.b.x - dist * inst.b.y, 0.0, 1.0);
-    vec2 odd = fract(grid * 0.5) * 2.0;
+    // A vertex at or past the map's far edge keeps its place on that axis (as cdlod.cpp).
+    vec2 odd = fract(grid * 0.5) * 2.0 * vec2(lessThan(xz, u_map_max));
     grid -= odd * morph;
     // Nodes may reach past the map's edge: their vertices stop at it (as cdlod.cpp's replica).
     xz = clamp(inst.a.xy + grid * step_m, u_map_min, u_map_max);

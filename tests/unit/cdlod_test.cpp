@@ -98,11 +98,14 @@ std::vector<glm::dvec2> edgeVertices(const SelectedNode& n, const Rect& r, const
     std::vector<glm::dvec2> out;
     int g_fixed = int(std::lround((fixed - (vertical ? r.x0 : r.z0)) / step));
     for (int g = 0; g <= quads; ++g) {
-        double along = (vertical ? r.z0 : r.x0) + g * step;
-        if (along < lo - 1e-9 || along > hi + 1e-9) continue;
         double k = 0;
-        out.push_back(vertical ? morphVertex(n, sel, t.mapping, t.map, cam, grid, g_fixed, g, &k)
-                               : morphVertex(n, sel, t.mapping, t.map, cam, grid, g, g_fixed, &k));
+        glm::dvec2 p = vertical ? morphVertex(n, sel, t.mapping, t.map, cam, grid, g_fixed, g, &k)
+                                : morphVertex(n, sel, t.mapping, t.map, cam, grid, g, g_fixed, &k);
+        // Keep the vertices that land on the shared stretch, after morphing and clamping to
+        // the map (a vertex past the map's edge lands on it).
+        double along = vertical ? (p.y + t.half()) / t.mapping.texelSizeZ() : (p.x + t.half()) / t.mapping.texelSizeX();
+        if (along < lo - 1e-6 || along > hi + 1e-6) continue;
+        out.push_back(p);
         if (ks) ks->push_back(k);
     }
     return out;
@@ -308,6 +311,11 @@ TEST_CASE("cdlod: ranges and morph constants respect the node-size bound") {
         for (int k = 0; k < n; ++k) {
             double prev = k ? sel.ranges[std::size_t(k - 1)] : 0.0, end = sel.ranges[std::size_t(k)];
             glm::dvec2 c = sel.morph_consts[std::size_t(k)];
+            if (k == n - 1) {  // the top level never morphs
+                CHECK(c == glm::dvec2(1.0, 0.0));
+                CHECK(end / std::max(prev, 1e-300) >= (k ? lod.range_ratio * (1 - 1e-12) : 0.0));
+                continue;
+            }
             double start = end - 1.0 / c.y;
             CHECK(c.x / c.y == doctest::Approx(end));
             CHECK(start >= prev + lod.morph_start * (end - prev) - 1e-6 * end);
@@ -499,4 +507,19 @@ TEST_CASE("cdlod: reusing a selection does not allocate") {
     v.position.y = 2000.0;  // fewer nodes
     selectNodes(t.tree, t.mapping, lod, v.position, frustumFor(v), sel);
     CHECK(sel.nodes.data() == data);
+}
+
+TEST_CASE("cdlod: the top level reaches the whole map, however few levels the tree has") {
+    // A 5x5 map 100 km across has one level: without this the map would end at base_range_m.
+    TestTerrain t(5, 5, 4, 100000.0, 50.0, 9);
+    LodSettings lod;
+    Selection sel;
+    ViewParams v;
+    v.position = {0.0, 5000.0, 0.0};
+    v.pitch_deg = -89.0;
+    v.fov_deg = 170.0;
+    selectNodes(t.tree, t.mapping, lod, v.position, frustumFor(v), sel);
+    REQUIRE(sel.ranges.size() == 1);
+    CHECK(sel.ranges[0] > 70000.0);  // the farthest corner is ~70.9 km away
+    CHECK(sel.nodes.size() == 1);
 }
