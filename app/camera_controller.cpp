@@ -42,4 +42,15 @@ void CameraController::update(const CameraInput& in, double dt, const CameraSett
     velocity = target + excess * decay;
 }
 
+void keepAboveGround(CameraController& camera, double ground_m, const CameraSettings& s) {
+    if (!std::isfinite(ground_m)) return;
+    if (s.follow_terrain) {
+        camera.position.y = ground_m + s.eye_height_m;
+        camera.velocity.y = 0.0;
+    } else if (!s.allow_below_ground && camera.position.y < ground_m + 2.0 * s.near_m) {
+        camera.position.y = ground_m + 2.0 * s.near_m;  // the near plane stays above the surface
+        camera.velocity.y = std::max(camera.velocity.y, 0.0);
+    }
+}
+
 }  // namespace vista

@@ -28,4 +28,9 @@ public:
     glm::dvec3 velocity{0.0};  // m/s
 };
 
+// Terrain-following (000's first-person manipulator): with follow_terrain the eye stays at
+// eye_height_m above ground_m (the ground height under the camera); otherwise the camera
+// stops just above the surface unless allow_below_ground.
+void keepAboveGround(CameraController& camera, double ground_m, const CameraSettings& s);
+
 }  // namespace vista

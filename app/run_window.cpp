@@ -94,19 +94,6 @@ void screenshot(int width, int height) {
     std::fprintf(stderr, "vista: %s\n", problem.empty() ? ("screenshot saved to " + file.string()).c_str() : problem.c_str());
 }
 
-// Terrain-following camera (000's first-person manipulator): walking keeps the eye at
-// eye_height_m above the ground; the free camera stops at the surface unless allowed below.
-void keepAboveGround(CameraController& camera, const Terrain& terrain, const CameraSettings& s) {
-    double ground = terrain.heightAt(camera.position.x, camera.position.z);
-    if (s.follow_terrain) {
-        camera.position.y = ground + s.eye_height_m;
-        camera.velocity.y = 0.0;
-    } else if (!s.allow_below_ground && camera.position.y < ground + s.near_m * 2.0) {
-        camera.position.y = ground + s.near_m * 2.0;
-        camera.velocity.y = std::max(camera.velocity.y, 0.0);
-    }
-}
-
 }  // namespace
 
 int runWindow(Settings s, const std::filesystem::path& scene_file) {
@@ -169,7 +156,7 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         stats.shader_errors.clear();
         for (const auto& p : renderer.prepare(s)) stats.shader_errors.push_back(p.str());  // settings edited live
         if (Terrain* terrain = renderer.terrain(); terrain && s.terrain.enabled)
-            keepAboveGround(camera, *terrain, s.camera);
+            keepAboveGround(camera, terrain->heightAt(camera.position.x, camera.position.z), s.camera);
         if (!paused) time_s += dt;
         renderer.shaders().poll();
 

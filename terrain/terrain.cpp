@@ -47,7 +47,7 @@ std::vector<std::uint32_t> gridIndices(int q) {
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() {
-    return {{"terrain/shaders/terrain.glsl", {}}, {"terrain/shaders/normals.glsl", {}}};
+    return {{"terrain/shaders/terrain.glsl", {}}, {"terrain/shaders/normals.glsl", {}}, {"terrain/shaders/bounds.glsl", {}}};
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
@@ -161,10 +161,29 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) const {
     glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances_.size()));
 }
 
+void Terrain::drawBounds(GLuint program) {
+    if (selection_.nodes.empty()) return;
+    if (!bounds_buffer_)
+        bounds_buffer_ = gl::Buffer::create(GLsizeiptr(kMaxInstances * 2 * sizeof(glm::vec4)), nullptr,
+                                            GL_DYNAMIC_STORAGE_BIT, "terrain node bounds");
+    std::vector<glm::vec4> boxes;
+    boxes.reserve(selection_.nodes.size() * 2);
+    for (const SelectedNode& n : selection_.nodes) {
+        if (boxes.size() / 2 >= kMaxInstances) break;
+        boxes.push_back(glm::vec4(glm::vec3(n.min_rel), float(n.level)));
+        boxes.push_back(glm::vec4(glm::vec3(n.max_rel), 0.0f));
+    }
+    glNamedBufferSubData(bounds_buffer_.id(), 0, GLsizeiptr(boxes.size() * sizeof(glm::vec4)), boxes.data());
+    glUseProgram(program);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, bounds_buffer_.id());
+    glBindVertexArray(vao_.id());
+    glDrawArrays(GL_LINES, 0, GLsizei(boxes.size() / 2 * 24));
+}
+
 std::size_t Terrain::memoryBytes() const {
     std::size_t texels = std::size_t(map_.width) * std::size_t(map_.height);
     return tree_.memoryBytes() + map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
-           std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size());
+           std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) + std::size_t(bounds_buffer_.size());
 }
 
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
@@ -190,6 +209,23 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             glDisable(GL_DEPTH_TEST);
         });
     targets = d.t;
+    if (!s.bounds) return;
+    const Data& b = graph.addPass<Data>("terrain.bounds",
+        [&](PassBuilder& builder, Data& data) {
+            data.t.hdr = builder.write(targets.hdr);
+            data.t.depth = builder.read(targets.depth);
+        },
+        [&rc, &terrain](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.t.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.t.hdr)}, ctx.texture(data.t.depth)), desc.width, desc.height);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GEQUAL);
+            glDepthMask(GL_FALSE);
+            terrain.drawBounds(rc.shaders.get("terrain/shaders/bounds.glsl")->id());
+            glDepthMask(GL_TRUE);
+            glDisable(GL_DEPTH_TEST);
+        });
+    targets.hdr = b.t.hdr;
 }
 
 }  // namespace vista

@@ -46,6 +46,8 @@ public:
 
     // Draws the current instances with the bound program's terrain uniforms set.
     void draw(const TerrainSettings& s, GLuint program) const;
+    // Draws the selected nodes' boxes as lines (debug view; its buffer is made on first use).
+    void drawBounds(GLuint program);
 
     const TerrainMapping& mapping() const { return mapping_; }
     const MinMaxQuadtree& quadtree() const { return tree_; }
@@ -67,13 +69,14 @@ private:
     glm::dvec3 camera_{0.0};
 
     gl::Texture height_, normals_, albedo_, detail_;
-    gl::Buffer grid_indices_, instance_buffer_;
+    gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_;
     gl::VertexArray vao_;
     GLsizei index_count_ = 0;
     std::size_t max_instances_ = 0;
 };
 
-// "terrain.gbuffer": the selected nodes into the scene targets (interim: forward-shaded HDR).
+// "terrain.gbuffer": the selected nodes into the scene targets (interim: forward-shaded HDR);
+// with [terrain] bounds, "terrain.bounds" draws their boxes over it.
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
                     SceneTargets& targets);
 

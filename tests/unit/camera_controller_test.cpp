@@ -78,3 +78,30 @@ TEST_CASE("camera: the glide is frame-rate independent and looking clamps pitch"
     a.update(in, 0.01, s);
     CHECK(a.fov_deg == doctest::Approx(5.0));
 }
+
+TEST_CASE("camera: terrain following keeps the eye height; the free camera stays above ground") {
+    CameraSettings s;
+    s.near_m = 0.1f;
+    CameraController c(s);
+    c.position = {10.0, 5.0, 20.0};
+    c.velocity = {1.0, -3.0, 0.0};
+
+    keepAboveGround(c, 12.0, s);  // free camera below a 12 m surface: lifted to just above it
+    CHECK(c.position.y == doctest::Approx(12.2));
+    CHECK(c.velocity.y == 0.0);
+    keepAboveGround(c, 3.0, s);  // above the ground: untouched
+    CHECK(c.position.y == doctest::Approx(12.2));
+
+    s.allow_below_ground = true;
+    c.position.y = -50.0;
+    keepAboveGround(c, 3.0, s);
+    CHECK(c.position.y == -50.0);
+
+    s.follow_terrain = true;
+    s.eye_height_m = 1.7f;
+    keepAboveGround(c, 3.0, s);
+    CHECK(c.position.y == doctest::Approx(4.7));
+    keepAboveGround(c, 100.0, s);  // walking up a slope
+    CHECK(c.position.y == doctest::Approx(101.7));
+    CHECK(c.velocity.y == 0.0);
+}
