@@ -2,6 +2,7 @@
 // the window loop, the capture runner or the checker.
 #include "app/cli.h"
 
+#include "app/bench_terrain.h"
 #include "app/camera_path.h"
 #include "app/capture.h"
 #include "app/run_window.h"
@@ -156,6 +157,19 @@ int runCli(int argc, char** argv) {
     bench_frame->add_option("--json", bench_json, "also write the stats JSON to this file");
     bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(CLI::Range(0, 1000));
 
+    SceneOptions terrain_scene;
+    BenchTerrainOptions terrain_opts;
+    std::string terrain_backend = "osmesa", terrain_heightmap, terrain_json;
+    CLI::App* bench_terrain = bench_cmd->add_subcommand("terrain", "CDLOD selection, triangles, error and GPU cost over random poses");
+    terrain_scene.add(bench_terrain);
+    bench_terrain->add_option("--heightmap", terrain_heightmap, "heightmap file (default: generate an island of --size)");
+    bench_terrain->add_option("--size", terrain_opts.size, "samples per side of the generated island, 2..16385")
+        ->check(CLI::Range(2, 16385));
+    bench_terrain->add_option("--poses", terrain_opts.poses, "random camera poses")->check(CLI::Range(1, 100000));
+    bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed");
+    bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
+
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
@@ -179,6 +193,14 @@ int runCli(int argc, char** argv) {
     if (*check_cmd) return check(check_scene);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
+    if (*bench_terrain) {
+        Settings s;
+        if (!terrain_scene.load(s)) return 2;
+        terrain_opts.heightmap = terrain_heightmap;
+        terrain_opts.json = terrain_json;
+        terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchTerrain(s, terrain_opts);
+    }
 
     const SceneOptions& scene = *run_cmd ? run_scene : SceneOptions{};
     if (!displayAvailable()) {

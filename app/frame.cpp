@@ -63,6 +63,11 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
     return errors;
 }
 
+void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
+    terrain_ = std::move(terrain);
+    terrain_failed_ = false;
+}
+
 RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
     RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
     FrameUniforms u{};

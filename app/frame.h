@@ -55,6 +55,9 @@ public:
     // problems (bad heightmap ...); the feature is then left out.
     InputErrors prepare(const Settings& settings);
     Terrain* terrain() { return terrain_.get(); }
+    // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
+    // name the same source.
+    void adoptTerrain(std::unique_ptr<Terrain> terrain);
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
 

@@ -51,14 +51,20 @@ std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() 
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
-    if (s.grid % 4 != 0) {
+    Heightmap map = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
+    if (map.samples.empty()) return nullptr;
+    return create(std::move(map), s, shaders, errors);
+}
+
+std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSettings& s, ShaderLibrary& shaders,
+                                         InputErrors& errors) {
+    if (s.grid % 4 != 0) {  // quadrants must start on even vertices for the morph
         errors.push_back({"[terrain] grid", 0, "grid = " + std::to_string(s.grid) + " is not accepted; accepted: a multiple of 4 in 4..256"});
         return nullptr;
     }
     std::unique_ptr<Terrain> t(new Terrain);
     t->source_ = s;
-    t->map_ = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
-    if (t->map_.samples.empty()) return nullptr;
+    t->map_ = std::move(heightmap);
     const Heightmap& map = t->map_;
     t->mapping_ = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     t->tree_ = MinMaxQuadtree(map, t->mapping_, s.grid);

@@ -31,6 +31,9 @@ public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
     // is accepted). Needs a current GL context and the shader library.
     static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
+    // Same, from a heightmap already in memory (benchmarks, generated maps).
+    static std::unique_ptr<Terrain> create(Heightmap map, const TerrainSettings& s, ShaderLibrary& shaders,
+                                           InputErrors& errors);
 
     // True when s names the same data and mapping (no reload needed).
     bool matches(const TerrainSettings& s) const;

@@ -1,0 +1,27 @@
+// `vista bench terrain`: CDLOD selection cost, triangle and node counts, screen-space error
+// against the full-resolution heightmap, memory, and the GPU cost of the terrain pass, over
+// random camera poses on a generated (or given) heightmap.
+#pragma once
+
+#include "app/gl_context.h"
+#include "config/settings.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace vista {
+
+struct BenchTerrainOptions {
+    std::filesystem::path heightmap;  // empty: generate an island of `size`
+    int size = 4097;                  // samples per side of the generated island
+    int poses = 16;
+    std::uint32_t seed = 1;           // island and poses
+    Backend backend = Backend::OSMesa;
+    std::filesystem::path json;       // empty: table only
+};
+
+// Returns the exit code.
+int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& options);
+
+}  // namespace vista
