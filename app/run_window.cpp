@@ -24,7 +24,7 @@ namespace {
 
 // Edge-triggered keys and scroll, gathered by GLFW callbacks.
 struct WindowEvents {
-    bool toggle_panel = false, screenshot = false, reload = false, pause = false, restart = false;
+    bool toggle_panel = false, screenshot = false, reload = false, pause = false, restart = false, walk = false;
     double scroll = 0.0;
 };
 
@@ -43,6 +43,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     if (key == GLFW_KEY_R) e.reload = true;
     if (key == GLFW_KEY_SPACE) e.pause = true;
     if (key == GLFW_KEY_BACKSPACE) e.restart = true;
+    if (key == GLFW_KEY_F) e.walk = true;
 }
 
 void onScroll(GLFWwindow* w, double, double dy) {
@@ -148,6 +149,7 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         if (ev.reload) renderer.shaders().reloadAll();
         if (ev.pause) paused = !paused;
         if (ev.restart) time_s = 0.0;
+        if (ev.walk) s.camera.follow_terrain = !s.camera.follow_terrain;
         CameraInput input = pollCamera(window, last_x, last_y);
         input.scroll = ev.scroll;
         bool take_screenshot = ev.screenshot;

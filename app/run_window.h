@@ -1,5 +1,6 @@
 // The interactive window: input, camera, time, frame, panel. Keys: F1 panel, F12
-// screenshot, R reload shaders, Space pause time, Backspace restart time, Esc quit.
+// screenshot, R reload shaders, Space pause time, Backspace restart time, F walk on the
+// terrain (follow it at eye height) or fly, Esc quit.
 #pragma once
 
 #include "config/settings.h"
