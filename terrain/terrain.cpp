@@ -57,7 +57,7 @@ std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& 
 }
 
 std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSettings& s, ShaderLibrary& shaders,
-                                         InputErrors& errors) {
+                                         InputErrors& errors, int max_texture) {
     if (s.grid % 4 != 0) {  // quadrants must start on even vertices for the morph
         errors.push_back({"[terrain] grid", 0, "grid = " + std::to_string(s.grid) + " is not accepted; accepted: a multiple of 4 in 4..256"});
         return nullptr;
@@ -69,9 +69,40 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     t->mapping_ = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     t->tree_ = MinMaxQuadtree(map, t->mapping_, s.grid);
 
-    t->height_ = gl::Texture::create2D(map.width, map.height, GL_R32F, 1, "terrain heights");
-    glTextureSubImage2D(t->height_.id(), 0, 0, 0, map.width, map.height, GL_RED, GL_FLOAT, map.samples.data());
-    t->normals_ = gl::Texture::create2D(map.width, map.height, GL_RGBA8_SNORM, 1, "terrain normals");
+    // Heights and normals live in texture arrays of tiles, so maps larger than the GL texture
+    // limit (16384 on llvmpipe; the bench goes to 16385^2) work. Tiles share their border
+    // texels, so bilinear filtering never needs a neighbouring tile.
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (max_texture > 0) max_size = std::min(max_size, std::max(max_texture, 3));
+    TerrainTiles& tiles = t->tiles_;
+    tiles.span = 1;
+    while (tiles.span * 2 <= max_size - 1) tiles.span *= 2;
+    tiles.count = {(map.width - 2) / tiles.span + 1, (map.height - 2) / tiles.span + 1};
+    tiles.layer = {tiles.count.x == 1 ? map.width : tiles.span + 1, tiles.count.y == 1 ? map.height : tiles.span + 1};
+    int layers = tiles.count.x * tiles.count.y;
+    auto makeArray = [&](GLenum format, const char* name) {
+        GLuint id = 0;
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        glTextureStorage3D(id, 1, format, tiles.layer.x, tiles.layer.y, layers);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glObjectLabel(GL_TEXTURE, id, -1, name);
+        return gl::Texture::adopt(id, tiles.layer.x, tiles.layer.y, format);
+    };
+    t->height_ = makeArray(GL_R32F, "terrain heights");
+    t->normals_ = makeArray(GL_RGBA8_SNORM, "terrain normals");
+    std::vector<float> row(std::size_t(tiles.layer.x));
+    for (int ty = 0; ty < tiles.count.y; ++ty)
+        for (int tx = 0; tx < tiles.count.x; ++tx)
+            for (int y = 0; y < tiles.layer.y; ++y) {  // rows clamped to the map: padding repeats the edge
+                int z = std::min(ty * tiles.span + y, map.height - 1);
+                for (int x = 0; x < tiles.layer.x; ++x) row[std::size_t(x)] = map.at(std::min(tx * tiles.span + x, map.width - 1), z);
+                glTextureSubImage3D(t->height_.id(), 0, 0, y, ty * tiles.count.x + tx, tiles.layer.x, 1, 1, GL_RED,
+                                    GL_FLOAT, row.data());
+            }
     ShaderLibrary::Program* normals = shaders.get("terrain/shaders/normals.glsl");
     if (!normals) {
         errors.push_back({"terrain/shaders/normals.glsl", 0, shaders.lastError()});
@@ -80,9 +111,10 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     glUseProgram(normals->id());
     glProgramUniform2f(normals->id(), 0, float(t->mapping_.texelSizeX()), float(t->mapping_.texelSizeZ()));
     glProgramUniform1f(normals->id(), 1, s.height_scale_m);
+    t->bindTiles(normals->id(), 2);
     glBindTextureUnit(binding::kTex0, t->height_.id());
-    glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
-    glDispatchCompute(GLuint((map.width + 15) / 16), GLuint((map.height + 15) / 16), 1);
+    glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
+    glDispatchCompute(GLuint((tiles.layer.x + 15) / 16), GLuint((tiles.layer.y + 15) / 16), GLuint(layers));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     MaterialImages materials = generateMaterialImages();
@@ -144,6 +176,12 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     return selection_;
 }
 
+void Terrain::bindTiles(GLuint program, GLint location) const {
+    glProgramUniform4i(program, location, tiles_.count.x, tiles_.count.y, tiles_.span, 0);
+    glProgramUniform4f(program, location + 1, float(tiles_.layer.x), float(tiles_.layer.y), float(map_.width),
+                       float(map_.height));
+}
+
 void Terrain::draw(const TerrainSettings& s, GLuint program) const {
     if (instances_.empty()) return;
     glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
@@ -158,6 +196,7 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) const {
     glProgramUniform1i(program, 7, int(s.view));
     glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
     glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
+    bindTiles(program, 10);
     glBindTextureUnit(binding::kTex0, height_.id());
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
@@ -187,7 +226,7 @@ void Terrain::drawBounds(GLuint program) {
 }
 
 std::size_t Terrain::memoryBytes() const {
-    std::size_t texels = std::size_t(map_.width) * std::size_t(map_.height);
+    std::size_t texels = std::size_t(tiles_.layer.x) * std::size_t(tiles_.layer.y) * std::size_t(tiles_.count.x * tiles_.count.y);
     return tree_.memoryBytes() + map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
            std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) + std::size_t(bounds_buffer_.size());
 }

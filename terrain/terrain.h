@@ -26,14 +26,23 @@ struct TerrainInstance {
     glm::vec4 b;  // morph constants of the level, grid step in z (m), unused
 };
 
+// How the heightmap is split into texture-array layers: tile (i, j) is layer j * count.x + i
+// and holds texels [i * span, i * span + layer.x) x [j * span, ...), clamped to the map.
+struct TerrainTiles {
+    glm::ivec2 count{1};  // tiles in x, z
+    int span = 1;         // texels between tile origins
+    glm::ivec2 layer{1};  // texels per layer
+};
+
 class Terrain {
 public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
     // is accepted). Needs a current GL context and the shader library.
     static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
-    // Same, from a heightmap already in memory (benchmarks, generated maps).
+    // Same, from a heightmap already in memory (benchmarks, generated maps). max_texture
+    // lowers the texture size limit the tiles must fit (tests; 0: GL_MAX_TEXTURE_SIZE).
     static std::unique_ptr<Terrain> create(Heightmap map, const TerrainSettings& s, ShaderLibrary& shaders,
-                                           InputErrors& errors);
+                                           InputErrors& errors, int max_texture = 0);
 
     // True when s names the same data and mapping (no reload needed).
     bool matches(const TerrainSettings& s) const;
@@ -57,6 +66,8 @@ public:
     const Heightmap& heightmap() const { return map_; }
     std::size_t memoryBytes() const;
     GLuint heightTexture() const { return height_.id(); }
+    // Sets the tile uniforms (ivec4 count.xy, span; vec4 layer.xy, map size) at location, location + 1.
+    void bindTiles(GLuint program, GLint location) const;
 
 private:
     Terrain() = default;
@@ -71,6 +82,7 @@ private:
     TerrainCounters counters_;
     glm::dvec3 camera_{0.0};
 
+    TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_;
     gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_;
     gl::VertexArray vao_;

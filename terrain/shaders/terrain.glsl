@@ -4,14 +4,17 @@
 // Interim shading: forward sun + sky ambient into the HDR target (the lighting issue moves
 // this to the G-buffer).
 #include "../../renderer/shaders/common.glsl"
+#include "tiles.glsl"
 
 struct Instance {
     vec4 a;  // camera-relative x, z of the quadrant's min corner (m), grid step in x (m), LOD level
     vec4 b;  // morph constants (end / (end - start), 1 / (end - start)), grid step in z (m), unused
 };
 layout(std430, binding = BINDING_TERRAIN_NODES) readonly buffer Instances { Instance u_instances[]; };
-layout(binding = BINDING_TEX_0) uniform sampler2D u_height;    // heightmap samples (R32F)
-layout(binding = BINDING_TEX_1) uniform sampler2D u_normals;   // world normals (RGBA8 snorm)
+layout(binding = BINDING_TEX_0) uniform sampler2DArray u_height;   // heightmap samples (R32F tiles)
+layout(binding = BINDING_TEX_1) uniform sampler2DArray u_normals;  // world normals (RGBA8 snorm tiles)
+layout(location = 10) uniform ivec4 u_tiles;      // tiles in x, z; texels between tiles
+layout(location = 11) uniform vec4 u_tile_layer;  // texels per layer x, z; heightmap size x, z
 
 layout(location = 0) uniform int u_quads;          // quads per instance side (half a node)
 layout(location = 1) uniform vec2 u_map_min;       // camera-relative x, z of texel (0, 0) (m)
@@ -21,14 +24,18 @@ layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of th
 
 #ifdef VERTEX_SHADER
 out vec3 v_rel;        // camera-relative position (m)
-out vec2 v_uv;         // heightmap texture coordinates
+out vec2 v_texel;      // heightmap texel coordinates
 out float v_sample;    // heightmap value (for material bands)
 out vec2 v_grid;       // grid coordinates within the instance (wireframe view)
 flat out vec2 v_lod;   // level, unused
 out float v_morph;
 
-vec2 uvAt(vec2 rel_xz) {
-    return ((rel_xz - u_map_min) / u_texel_m + 0.5) / vec2(textureSize(u_height, 0));
+vec2 texelAt(vec2 rel_xz) {
+    return (rel_xz - u_map_min) / u_texel_m;
+}
+
+float heightSample(vec2 texel) {
+    return textureLod(u_height, tileCoord(texel, u_tiles, u_tile_layer), 0.0).r;
 }
 
 void main() {
@@ -37,7 +44,7 @@ void main() {
     vec2 grid = vec2(gl_VertexID % side, gl_VertexID / side);
     vec2 step_m = vec2(inst.a.z, inst.b.z);
     vec2 xz = inst.a.xy + grid * step_m;
-    float h = u_height_map.y + u_height_map.x * textureLod(u_height, uvAt(xz), 0.0).r;
+    float h = u_height_map.y + u_height_map.x * heightSample(texelAt(xz));
     // Strugar's morph: distance to the unmorphed vertex, odd vertices slide onto the
     // coarser grid (toward their even neighbour) as morph goes 0 -> 1.
     float dist = length(vec3(xz.x, h, xz.y));
@@ -47,11 +54,11 @@ void main() {
     grid -= odd * morph;
     // Nodes may reach past the map's edge: their vertices stop at it (as cdlod.cpp's replica).
     xz = clamp(inst.a.xy + grid * step_m, u_map_min, u_map_max);
-    vec2 uv = uvAt(xz);
-    float s = textureLod(u_height, uv, 0.0).r;
+    vec2 texel = texelAt(xz);
+    float s = heightSample(texel);
     h = u_height_map.y + u_height_map.x * s;
     v_rel = vec3(xz.x, h, xz.y);
-    v_uv = uv;
+    v_texel = texel;
     v_sample = s;
     v_grid = grid;
     v_lod = vec2(inst.a.w, 0.0);
@@ -71,7 +78,7 @@ layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 mor
 layout(location = 8) uniform int u_wireframe;
 
 in vec3 v_rel;
-in vec2 v_uv;
+in vec2 v_texel;
 in float v_sample;
 in vec2 v_grid;
 flat in vec2 v_lod;
@@ -93,7 +100,7 @@ void layerSample(int layer, vec2 uv, out vec4 albedo, out vec3 detail) {
 }
 
 void main() {
-    vec3 n = safeNormalize(texture(u_normals, v_uv).xyz);
+    vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
     float dist = length(v_rel);
     if (u_terrain_view == 1 || u_terrain_view == 2 || u_terrain_view == 3) {
         vec3 c = n * 0.5 + 0.5;
