@@ -116,6 +116,13 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
     glDispatchCompute(GLuint((tiles.layer.x + 15) / 16), GLuint((tiles.layer.y + 15) / 16), GLuint(layers));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    // Once at load, not per frame: a failed allocation must not leave a silently flat terrain.
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        errors.push_back({s.heightmap, 0, "the GL could not hold the terrain (" + std::to_string(map.width) + "x" +
+                                              std::to_string(map.height) + " in " + std::to_string(layers) +
+                                              " tiles), GL error " + std::to_string(e)});
+        return nullptr;
+    }
 
     MaterialImages materials = generateMaterialImages();
     t->albedo_ = materialArray(materials.albedo, materials.size, materials.layers, GL_SRGB8_ALPHA8, "terrain albedo");
