@@ -130,7 +130,7 @@ void main() {
         // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar so cliffs
         // do not stretch. Snow holds on flatter ground only.
         float rock = smoothstep(u_material.y + 0.06, u_material.y - 0.06, n.y);
-        float dirt = smoothstep(u_material.y + 0.18, u_material.y + 0.06, n.y) * (1.0 - rock) * step(float(lower), 1.5);
+        float dirt = 0.7 * smoothstep(u_material.y + 0.12, u_material.y + 0.04, n.y) * (1.0 - rock) * step(float(lower), 1.5);
         if (dirt > 0.0) {
             vec4 da;
             vec3 dd;
