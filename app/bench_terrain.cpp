@@ -6,6 +6,7 @@
 #include "app/stats.h"
 #include "terrain/heightmap.h"
 
+#include <glm/gtc/packing.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -42,6 +43,19 @@ std::vector<ViewParams> randomPoses(const Terrain& terrain, const TerrainSetting
         poses.push_back(v);
     }
     return poses;
+}
+
+// Largest vertical screen error (px) of a frame rendered with [terrain] view = error, which
+// writes it to the HDR target's alpha (background pixels hold 0).
+double maxErrorPx(FrameRenderer& renderer, Settings s, const ViewParams& view) {
+    std::vector<std::uint16_t> hdr;
+    FrameRequest request;
+    request.capture_hdr = &hdr;
+    s.terrain.view = TerrainView::Error;
+    renderer.render(s, view, 0.0, request);
+    double worst = 0.0;
+    for (std::size_t i = 3; i < hdr.size(); i += 4) worst = std::max(worst, double(glm::unpackHalf1x16(hdr[i])));
+    return worst;
 }
 
 }  // namespace
@@ -88,16 +102,22 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
 
     RunStats stats;
     stats.reference_copy_ms = renderer.measureReferenceCopy(kWidth, kHeight);
-    std::vector<double> select_ms, triangles, nodes, draws, gpu_ms;
+    // The same poses with distance-only CDLOD whose ranges are raised to meet the same error
+    // bound: what the per-node error metric saves.
+    Settings distance = s;
+    distance.terrain.lod_metric = LodMetric::Distance;
+    std::vector<double> select_ms, triangles, nodes, draws, gpu_ms, triangles_distance, base_distance;
+    double max_error = 0.0, max_error_distance = 0.0, base_error = 0.0;
     std::vector<unsigned char> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;
     for (const ViewParams& view : randomPoses(terrain, s.terrain, o.poses, o.seed, kWidth, kHeight)) {
         glm::dmat4 view_proj(viewMatrices(view).view_proj);
+        const double error_scale = screenErrorScale(view.fov_deg, view.width, view.height);
         std::vector<double> samples;
         for (int r = 0; r < 15; ++r) {  // selection is microseconds: take the median of repeats
             auto t0 = std::chrono::steady_clock::now();
-            terrain.select(view.position, view_proj, s.terrain);
+            terrain.select(view.position, view_proj, s.terrain, error_scale);
             samples.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         }
         select_ms.push_back(median(samples));
@@ -109,6 +129,12 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
         triangles.push_back(double(c.triangles));
         nodes.push_back(double(c.nodes));
         draws.push_back(double(c.draws));
+        base_error = c.base_range_m;
+        max_error = std::max(max_error, maxErrorPx(renderer, s, view));
+
+        max_error_distance = std::max(max_error_distance, maxErrorPx(renderer, distance, view));
+        triangles_distance.push_back(double(terrain.counters().triangles));
+        base_distance.push_back(terrain.counters().base_range_m);
     }
 
     double gpu = median(gpu_ms);
@@ -120,6 +146,12 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
         {"triangles_median", median(triangles)},
         {"nodes_median", median(nodes)},
         {"draws_median", median(draws)},
+        {"max_error_px", max_error},
+        {"error_bound_px", s.terrain.max_error_px},
+        {"triangles_distance_only_median", median(triangles_distance)},
+        {"max_error_px_distance_only", max_error_distance},
+        {"base_range_m", base_error},
+        {"base_range_m_distance_only", median(base_distance)},
         {"memory_bytes", terrain.memoryBytes()},
         {"terrain_gpu_ms_median", gpu},
         {"reference_copy_ms", stats.reference_copy_ms},

@@ -54,7 +54,8 @@ void describe(SettingsVisitor& v, DebugSettings& s) {
 }
 
 void describe(SettingsVisitor& v, TerrainSettings& s) {
-    static constexpr std::array<const char*, 4> views{"shaded", "lod", "morph", "normals"};
+    static constexpr std::array<const char*, 5> views{"shaded", "lod", "morph", "normals", "error"};
+    static constexpr std::array<const char*, 2> metrics{"error", "distance"};
     v.section("terrain", "heightmap terrain with CDLOD level of detail");
     v.field({"enabled", "", "draw the terrain"}, s.enabled);
     v.field({"heightmap", "", "PNG (8/16-bit), TIFF, EXR, or raw .r16 with raw_width/raw_height"}, s.heightmap);
@@ -65,10 +66,15 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"height_scale_m", "m", "height of heightmap value 1"}, s.height_scale_m, 0.0f, 1.0e5f);
     v.field({"height_offset_m", "m", "height of heightmap value 0"}, s.height_offset_m, -1.0e5f, 1.0e5f);
     v.field({"grid", "quads", "quads per node side; a leaf node spans this many texels"}, s.grid, 2, 256);
-    v.field({"base_range_m", "m", "LOD 0 range (raised to what the node size needs)"}, s.base_range_m, 1.0f, 1.0e6f);
+    v.choice({"lod_metric", "", "error: per-node screen error picks the detail; distance: Strugar's ranges alone"},
+             s.lod_metric, metrics);
+    v.field({"max_error_px", "px", "largest vertical screen error the LOD may leave"}, s.max_error_px, 0.05f, 100.0f);
+    v.field({"bias_slope", "m/m", "error metric: largest slope of the distance bias (finer transitions, larger ranges)"},
+            s.bias_slope, 0.05f, 4.0f);
+    v.field({"base_range_m", "m", "LOD 0 range (raised to what node size and error need)"}, s.base_range_m, 1.0f, 1.0e6f);
     v.field({"range_ratio", "x", "range growth per LOD level"}, s.range_ratio, 1.5f, 4.0f);
     v.field({"morph_start", "", "fraction of each level's span before morphing starts"}, s.morph_start, 0.0f, 0.95f);
-    v.choice({"view", "", "shaded, or colour by LOD level, morph factor or normal"}, s.view, views);
+    v.choice({"view", "", "shaded, or colour by LOD level, morph factor, normal or screen error (px)"}, s.view, views);
     v.field({"wireframe", "", "overlay the node grids' edges"}, s.wireframe);
     v.field({"bounds", "", "draw the selected nodes' bounding boxes"}, s.bounds);
     v.field({"detail_distance_m", "m", "detail textures fade out by this distance"}, s.detail_distance_m, 1.0f, 100000.0f);

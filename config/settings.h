@@ -56,7 +56,8 @@ struct DebugSettings {
     float grid_spacing = 10.0f; //!< m between minor lines; major lines every 10
 };
 
-enum class TerrainView : int { Shaded, Lod, Morph, Normals };
+enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
+enum class LodMetric : int { Error, Distance };
 
 struct TerrainSettings {
     bool enabled = true;
@@ -68,7 +69,10 @@ struct TerrainSettings {
     float height_scale_m = 600.0f;    //!< m, height of heightmap value 1
     float height_offset_m = 0.0f;     //!< m, height of heightmap value 0
     int grid = 32;                    //!< quads per node side (a leaf node spans this many texels)
-    float base_range_m = 150.0f;      //!< m, LOD 0 range (raised to what the node size needs)
+    LodMetric lod_metric = LodMetric::Error;  //!< per-node screen error (terrain/lod_error.h) or distance only
+    float max_error_px = 1.0f;        //!< px, largest vertical screen error the LOD may leave
+    float bias_slope = 2.0f;          //!< m/m, slope limit of the error metric's distance bias
+    float base_range_m = 150.0f;      //!< m, LOD 0 range (raised to what node size and error need)
     float range_ratio = 2.0f;         //!< range growth per LOD level
     float morph_start = 0.7f;         //!< fraction of each level's span before morphing starts
     TerrainView view = TerrainView::Shaded;

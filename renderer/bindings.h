@@ -11,6 +11,7 @@ constexpr int kTex0 = 0;           // texture units, in the order a pass declare
 constexpr int kTex1 = 1;
 constexpr int kTex2 = 2;
 constexpr int kTex3 = 3;
+constexpr int kTex4 = 4;
 constexpr int kTerrainNodes = 1;   // shader storage: selected terrain node instances
 
 }  // namespace vista::binding

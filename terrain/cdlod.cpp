@@ -16,7 +16,15 @@
 // range[L-2], and it touches C: the point p of C's side level with q (same along-edge coordinate,
 // height clamped into C's y range) has |p - q| <= E_{L-1}, so range[L-1] < range[L-2] + E_{L-1},
 // which s_{L-1} >= E_{L-1} rules out.
+// With a distance bias g of slope <= lambda (terrain/lod_error.h) the distance is
+// d_eff = |p - camera| + g(p), a (1 + lambda)-Lipschitz function, and a node's distance is its
+// box distance plus its smallest g (a lower bound of d_eff over it). The argument above goes
+// through with D and E replaced by (1 + lambda) D: the box-nearest point and the point of
+// smallest g may differ, but both lie in G, so any v in G has d_eff(v) <= node distance +
+// (1 + lambda) D_{L-1}.
 #include "terrain/cdlod.h"
+
+#include "terrain/lod_error.h"
 
 #include <glm/geometric.hpp>
 
@@ -75,6 +83,8 @@ struct Selector {
     const Frustum& frustum;
     glm::dvec3 camera;
     const std::vector<double>& ranges;
+    const DistanceBias* bias;
+    int top;
     std::vector<SelectedNode>& out;
 
     std::int64_t texels(int level) const { return std::int64_t(tree.leafTexels()) << level; }
@@ -105,12 +115,12 @@ struct Selector {
     }
 
     // False when the node is out of range[level]: its parent then draws the area.
+    // The top level is never out of range: it covers what no finer level does.
     bool select(int level, int x, int z, const Box& b) {
-        double d2 = distance2(b);
-        if (d2 > ranges[std::size_t(level)] * ranges[std::size_t(level)]) return false;
+        double d = std::sqrt(distance2(b)) + (bias ? double(bias->minAt(level, x, z)) : 0.0);
+        if (level != top && d > ranges[std::size_t(level)]) return false;
         if (!intersects(frustum, b)) return true;  // handled: nothing visible
-        double inner = level > 0 ? ranges[std::size_t(level - 1)] : 0.0;
-        if (level == 0 || d2 > inner * inner) {
+        if (level == 0 || d > ranges[std::size_t(level - 1)]) {
             add(level, level, x, z, b);
             return true;
         }
@@ -208,23 +218,25 @@ Frustum frustumFromViewProj(const glm::dmat4& m) {
     return f;
 }
 
-void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
-                 const glm::dvec3& camera, const Frustum& frustum, Selection& out) {
-    out.nodes.clear();
-    out.ranges.clear();
-    out.morph_consts.clear();
+void lodRanges(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
+               std::vector<double>& ends, std::vector<double>& starts) {
+    ends.clear();
+    starts.clear();
     if (tree.levels() == 0) return;
     const int levels = lod.levels > 0 ? std::min(lod.levels, tree.levels()) : tree.levels();
     const double ratio = std::max(lod.range_ratio, 1.01);
     const double m = std::clamp(lod.morph_start, 0.0, 0.99);
+    const double lipschitz = 1.0 + std::max(lod.bias_slope, 0.0);
 
     // Raise the base range to the bound derived at the top of this file.
-    auto bounds = [&](int k) {  // D_k, E_k
+    auto bounds = [&](int k) {  // D_k, E_k (scaled by the distance's Lipschitz constant)
         std::int64_t n = std::int64_t(tree.leafTexels()) << k;
         double ex = double(std::min<std::int64_t>(n, mapping.width - 1)) * mapping.texelSizeX();
         double ez = double(std::min<std::int64_t>(n, mapping.height - 1)) * mapping.texelSizeZ();
         double h2 = tree.heightSpan(k) * tree.heightSpan(k);
-        return glm::dvec2(std::sqrt(ex * ex + ez * ez + h2), std::sqrt(std::max(ex * ex, ez * ez) + h2));
+        double diagonal = std::sqrt(ex * ex + ez * ez + h2);
+        double side = lod.bias_slope > 0.0 ? diagonal : std::sqrt(std::max(ex * ex, ez * ez) + h2);
+        return glm::dvec2(diagonal, side) * lipschitz;
     };
     double base = std::max(lod.base_range_m, 1e-3);
     for (int k = 1; k < levels; ++k) {
@@ -232,6 +244,23 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
         if (k <= levels - 2) need = std::max(need, bounds(k).y);
         base = std::max(base, need / (std::pow(ratio, k - 1) * (ratio - 1.0)));
     }
+    double prev = 0.0;
+    for (int level = 0; level < levels; ++level) {
+        double end = base * std::pow(ratio, level);
+        ends.push_back(end);
+        starts.push_back(level == 0 ? m * end : prev + std::max(m * (end - prev), bounds(level - 1).x));
+        prev = end;
+    }
+}
+
+void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
+                 const glm::dvec3& camera, const Frustum& frustum, Selection& out, const DistanceBias* bias) {
+    out.nodes.clear();
+    out.morph_consts.clear();
+    lodRanges(tree, mapping, lod, out.ranges, out.morph_starts);
+    if (tree.levels() == 0) return;
+    const int levels = int(out.ranges.size());
+
     // The top level has no coarser level to hand over to, so its range reaches the farthest
     // corner of the map: the whole map is always drawn, however few levels the tree has.
     double half = mapping.size_m * 0.5, low = tree.minMax(levels - 1, 0, 0).x, high = low;
@@ -244,27 +273,34 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
         }
     glm::dvec3 far(std::abs(camera.x) + half, std::max(std::abs(camera.y - low), std::abs(camera.y - high)),
                    std::abs(camera.z) + half);
-    double prev = 0.0;
     for (int level = 0; level < levels; ++level) {
-        double end = base * std::pow(ratio, level);
+        double& end = out.ranges[std::size_t(level)];
+        double start = out.morph_starts[std::size_t(level)];
         if (level == levels - 1) end = std::max(end, glm::length(far) * 1.001);
-        double start = level == 0 ? m * end : prev + std::max(m * (end - prev), bounds(level - 1).x);
-        out.ranges.push_back(end);
         // The top level has no coarser grid to morph into: k stays 0 (c = (1, 0)).
         out.morph_consts.push_back(level == levels - 1 ? glm::dvec2(1.0, 0.0)
                                                        : glm::dvec2(end / (end - start), 1.0 / (end - start)));
-        prev = end;
     }
 
-    Selector s{tree, mapping, frustum, camera, out.ranges, out.nodes};
     const int top = levels - 1;
+    Selector s{tree, mapping, frustum, camera, out.ranges, bias, top, out.nodes};
     glm::ivec2 count = tree.nodesPerSide(top);
     for (int z = 0; z < count.y; ++z)
         for (int x = 0; x < count.x; ++x) s.select(top, x, z, s.box(top, x, z));
 }
 
+void cullSelection(const Selection& from, const Frustum& frustum, Selection& out) {
+    out.ranges = from.ranges;
+    out.morph_starts = from.morph_starts;
+    out.morph_consts = from.morph_consts;
+    out.nodes.clear();
+    for (const SelectedNode& n : from.nodes)
+        if (intersects(frustum, Box{n.min_rel, n.max_rel})) out.nodes.push_back(n);
+}
+
 glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const TerrainMapping& mapping,
-                       const Heightmap& map, const glm::dvec3& camera, int grid, int gx, int gz, double* morph_k) {
+                       const Heightmap& map, const glm::dvec3& camera, int grid, int gx, int gz, double* morph_k,
+                       const DistanceBias* bias) {
     glm::dvec2 step = node.size_m * double(1 << (node.level - node.node_level)) / double(grid);
     glm::dvec2 g(gx, gz);
     glm::dvec2 rel = node.origin_rel + g * step;
@@ -274,6 +310,7 @@ glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const Ter
                mapping.height_scale_m * bilinear(map, (rel.x - map_min.x) / mapping.texelSizeX(),
                                                  (rel.y - map_min.y) / mapping.texelSizeZ());
     double d = glm::length(glm::dvec3(rel.x, h, rel.y));
+    if (bias) d += bias->at((rel.x - map_min.x) / mapping.texelSizeX(), (rel.y - map_min.y) / mapping.texelSizeZ());
     glm::dvec2 c = sel.morph_consts[std::size_t(node.level)];
     double k = 1.0 - std::clamp(c.x - d * c.y, 0.0, 1.0);
     if (morph_k) *morph_k = k;

@@ -82,7 +82,12 @@ struct LodSettings {
     double range_ratio = 2.0;     // range of level L = base * ratio^L (at least 1.01)
     double morph_start = 0.7;     // morph over the last (1 - morph_start) of each level's span ([0, 0.99];
                                   // below 1/2 the start may move out, as above)
+    double bias_slope = 0.0;      // largest slope (m/m) of a distance bias field (terrain/lod_error.h) added
+                                  // to distances; the bounds above then use (1 + bias_slope) D_k for D_k,
+                                  // and also for E_k when bias_slope > 0
 };
+
+class DistanceBias;
 
 // One rectangle drawn with level `level`'s grid and morph constants. Usually a whole node
 // (node_level == level). When only some children of a level-L node are finer, each remaining
@@ -105,14 +110,26 @@ struct Selection {
     // (c = (1, 0)) and reaches the farthest corner of the map; end = ranges[L],
     // start = ranges[L-1] + max(morph_start * (ranges[L] - ranges[L-1]), D_{L-1}); for L = 0: morph_start * ranges[0].
     std::vector<glm::dvec2> morph_consts;
-    std::vector<double> ranges;  // per level, after raising the base range
+    std::vector<double> ranges;        // per level, after raising the base range
+    std::vector<double> morph_starts;  // per level: where the morph starts (m; unused for the top level)
 };
 
+// Per-level range ends and morph starts (m) as above, before the top level is stretched to
+// the map's far corner (selectNodes does that).
+void lodRanges(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
+               std::vector<double>& ends, std::vector<double>& starts);
+
 // Selects nodes for a camera at world position camera (double), visible in frustum
-// (camera-relative). Each part of the map inside the frustum and within the top range is
-// covered by exactly one node. Allocation-free after the first call if `out` is reused.
+// (camera-relative). Each part of the map inside the frustum is covered by exactly one node.
+// With a bias, a node's distance is its box distance plus the smallest bias over it (a lower
+// bound of d_eff over the node). Allocation-free after the first call if `out` is reused.
 void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
-                 const glm::dvec3& camera, const Frustum& frustum, Selection& out);
+                 const glm::dvec3& camera, const Frustum& frustum, Selection& out, const DistanceBias* bias = nullptr);
+
+// Keeps the nodes of `from` whose boxes are not wholly outside `frustum` (camera-relative to
+// the same camera): the main camera's selection reused for a shadow pass, so casters and
+// receivers agree and nothing is selected twice. Allocation-free when `out` is reused.
+void cullSelection(const Selection& from, const Frustum& frustum, Selection& out);
 
 // CPU replica of the vertex shader: the morphed world x/z of grid vertex (gx, gz) of node,
 // for a camera at `camera` (world, as passed to selectNodes). `grid` is the quads per side of a
@@ -120,12 +137,13 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
 // q = grid >> (level - node_level) quads per side, gx, gz in [0, q], spacing
 // step = size_m * 2^(level - node_level) / grid. With g = (gx, gz) and rel = origin_rel + g * step:
 //   h = height_offset + height_scale * bilinear(map, texel coords of rel) - camera.y
-//   d = length(rel.x, h, rel.y);  k = 1 - clamp(c.x - d * c.y, 0, 1)  (c = morph_consts[level])
+//   d = length(rel.x, h, rel.y) + g(rel);  k = 1 - clamp(c.x - d * c.y, 0, 1)  (c = morph_consts[level],
+//   g the bias at the vertex, 0 without one)
 //   g -= fract(g / 2) * 2 * k * (rel < map max);  rel = clamp(origin_rel + g * step, map min, map max)
 //   (camera-relative; a vertex at or past the far map edge does not morph on that axis)
 // Bilinear sampling matches GL_LINEAR with clamp-to-edge on texel centres.
 glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const TerrainMapping& mapping,
                        const Heightmap& map, const glm::dvec3& camera, int grid, int gx, int gz,
-                       double* morph_k = nullptr);
+                       double* morph_k = nullptr, const DistanceBias* bias = nullptr);
 
 }  // namespace vista

@@ -68,6 +68,7 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     const Heightmap& map = t->map_;
     t->mapping_ = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     t->tree_ = MinMaxQuadtree(map, t->mapping_, s.grid);
+    t->errors_ = GridErrors(map, t->mapping_, s.grid, t->tree_.levels());
 
     // Heights and normals live in texture arrays of tiles, so maps larger than the GL texture
     // limit (16384 on llvmpipe; the bench goes to 16385^2) work. Tiles share their border
@@ -127,6 +128,9 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     MaterialImages materials = generateMaterialImages();
     t->albedo_ = materialArray(materials.albedo, materials.size, materials.layers, GL_SRGB8_ALPHA8, "terrain albedo");
     t->detail_ = materialArray(materials.normal, materials.size, materials.layers, GL_RGBA8, "terrain detail normals");
+    t->bias_.clear(t->tree_, t->mapping_);
+    glm::ivec2 corners = t->bias_.cornerCount();
+    t->bias_texture_ = gl::Texture::create2D(corners.x, corners.y, GL_R32F, 1, "terrain distance bias");
 
     std::vector<std::uint32_t> indices = gridIndices(s.grid / 2);
     t->index_count_ = GLsizei(indices.size());
@@ -151,15 +155,32 @@ double Terrain::heightAt(double x, double z) const {
     return source_.origin.y + mapping_.height_offset_m + mapping_.height_scale_m * map_.sample(tx, tz);
 }
 
-const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s) {
+const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
+                                double error_scale) {
     auto start = std::chrono::steady_clock::now();
     source_.origin = s.origin;  // moving the terrain needs no reload
     camera_ = camera;
-    lod_.base_range_m = s.base_range_m;
-    lod_.range_ratio = s.range_ratio;
-    lod_.morph_start = s.morph_start;
+    // The error bound depends on the settings and the view's pixels per radian only: remade
+    // when one changes (a resize, a slider), not per frame.
+    bool error_metric = s.lod_metric == LodMetric::Error;
+    std::array<double, 7> key{double(error_metric), error_scale, s.max_error_px, s.bias_slope, s.base_range_m,
+                              s.range_ratio, s.morph_start};
+    if (key != bias_key_) {
+        bias_key_ = key;
+        lod_.range_ratio = s.range_ratio;
+        lod_.morph_start = s.morph_start;
+        lod_.base_range_m = s.base_range_m;
+        lod_.base_range_m = calibratedBaseRange(tree_, errors_, mapping_, lod_, error_scale, s.max_error_px);
+        lod_.bias_slope = error_metric ? s.bias_slope : 0.0;
+        if (error_metric)
+            bias_.build(tree_, errors_, mapping_, lod_, error_scale, s.max_error_px);
+        else
+            bias_.clear(tree_, mapping_);
+        bias_dirty_ = true;
+    }
     // The mapping is centred on the origin: select with the camera relative to the terrain.
-    selectNodes(tree_, mapping_, lod_, camera - s.origin, frustumFromViewProj(view_proj), selection_);
+    selectNodes(tree_, mapping_, lod_, camera - s.origin, frustumFromViewProj(view_proj), selection_,
+                error_metric ? &bias_ : nullptr);
     instances_.clear();
     glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera.x - s.origin.x, camera.z - s.origin.z);
     for (const SelectedNode& node : selection_.nodes) {
@@ -179,6 +200,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     counters_.nodes = std::int64_t(selection_.nodes.size());
     counters_.draws = instances_.empty() ? 0 : 1;
     counters_.triangles = std::int64_t(instances_.size()) * (index_count_ / 3);
+    counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
 }
@@ -189,8 +211,13 @@ void Terrain::bindTiles(GLuint program, GLint location) const {
                        float(map_.height));
 }
 
-void Terrain::draw(const TerrainSettings& s, GLuint program) const {
+void Terrain::draw(const TerrainSettings& s, GLuint program) {
     if (instances_.empty()) return;
+    if (bias_dirty_) {
+        glm::ivec2 corners = bias_.cornerCount();
+        glTextureSubImage2D(bias_texture_.id(), 0, 0, 0, corners.x, corners.y, GL_RED, GL_FLOAT, bias_.corners().data());
+        bias_dirty_ = false;
+    }
     glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
     glm::dvec3 rel = camera_ - s.origin;  // camera relative to the map centre
     glProgramUniform1i(program, 0, s.grid / 2);
@@ -204,6 +231,10 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) const {
     glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
     glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
     bindTiles(program, 10);
+    glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
+                       s.lod_metric == LodMetric::Error ? 1 : 0);
+    glProgramUniform1f(program, 13, s.max_error_px);
+    glBindTextureUnit(binding::kTex4, bias_texture_.id());
     glBindTextureUnit(binding::kTex0, height_.id());
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
@@ -234,7 +265,8 @@ void Terrain::drawBounds(GLuint program) {
 
 std::size_t Terrain::memoryBytes() const {
     std::size_t texels = std::size_t(tiles_.layer.x) * std::size_t(tiles_.layer.y) * std::size_t(tiles_.count.x * tiles_.count.y);
-    return tree_.memoryBytes() + map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
+    return tree_.memoryBytes() + errors_.memoryBytes() + bias_.memoryBytes() + bias_.corners().size() * sizeof(float) /* its texture */ +
+           map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
            std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) + std::size_t(bounds_buffer_.size());
 }
 
@@ -243,7 +275,8 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
     struct Data {
         SceneTargets t;
     };
-    terrain.select(rc.view.position, glm::dmat4(rc.matrices.view_proj), s);
+    terrain.select(rc.view.position, glm::dmat4(rc.matrices.view_proj), s,
+                   screenErrorScale(rc.view.fov_deg, rc.view.width, rc.view.height));
     const Data& d = graph.addPass<Data>("terrain.gbuffer",
         [&](PassBuilder& b, Data& data) {
             data.t.hdr = b.write(targets.hdr);

@@ -10,7 +10,9 @@
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "terrain/cdlod.h"
+#include "terrain/lod_error.h"
 
+#include <array>
 #include <memory>
 
 namespace vista {
@@ -18,6 +20,7 @@ namespace vista {
 struct TerrainCounters {
     std::int64_t triangles = 0, nodes = 0, draws = 0;
     double select_ms = 0.0;
+    double base_range_m = 0.0;  // LOD 0 range in use (after the node-size and error bounds)
 };
 
 // One quadrant of a node at its LOD level: what the shader draws per instance.
@@ -51,13 +54,19 @@ public:
     double heightAt(double x, double z) const;
 
     // Selects nodes for a camera (world position, camera-relative view-projection) and fills
-    // the instance list; the selection can be reused for shadow passes.
-    const Selection& select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s);
+    // the instance list. error_scale is screenErrorScale() of the view: the LOD keeps the
+    // vertical screen error within s.max_error_px for it. Reuse the result for shadow passes
+    // with cullSelection() against the shadow frustum (one selection per frame).
+    const Selection& select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
+                            double error_scale);
+    const Selection& selection() const { return selection_; }
     const std::vector<TerrainInstance>& instances() const { return instances_; }
+    const GridErrors& gridErrors() const { return errors_; }
+    const DistanceBias& distanceBias() const { return bias_; }
     const TerrainCounters& counters() const { return counters_; }
 
     // Draws the current instances with the bound program's terrain uniforms set.
-    void draw(const TerrainSettings& s, GLuint program) const;
+    void draw(const TerrainSettings& s, GLuint program);  // uploads a remade bias first
     // Draws the selected nodes' boxes as lines (debug view; its buffer is made on first use).
     void drawBounds(GLuint program);
 
@@ -78,12 +87,16 @@ private:
     MinMaxQuadtree tree_;
     LodSettings lod_;
     Selection selection_;
+    GridErrors errors_;
+    DistanceBias bias_;
+    std::array<double, 7> bias_key_{};  // what bias_ and lod_.base_range_m were made for
+    bool bias_dirty_ = true;            // bias_ not yet in bias_texture_
     std::vector<TerrainInstance> instances_;
     TerrainCounters counters_;
     glm::dvec3 camera_{0.0};
 
     TerrainTiles tiles_;
-    gl::Texture height_, normals_, albedo_, detail_;
+    gl::Texture height_, normals_, albedo_, detail_, bias_texture_;
     gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_;
     gl::VertexArray vao_;
     GLsizei index_count_ = 0;

@@ -7,4 +7,5 @@
 #define BINDING_TEX_1 1
 #define BINDING_TEX_2 2
 #define BINDING_TEX_3 3
+#define BINDING_TEX_4 4
 #define BINDING_TERRAIN_NODES 1

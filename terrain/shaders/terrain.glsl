@@ -21,6 +21,22 @@ layout(location = 1) uniform vec2 u_map_min;       // camera-relative x, z of te
 layout(location = 2) uniform vec2 u_texel_m;       // metres between samples in x, z
 layout(location = 3) uniform vec2 u_height_map;    // height = offset + scale * sample: (scale, offset - camera y)
 layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of the last texel (m)
+layout(location = 12) uniform ivec4 u_bias_cells;  // leaf cells in x, z; texels per cell; bias on (1) / off (0)
+layout(location = 13) uniform float u_max_error_px;  // the LOD's screen error bound (error view)
+
+// The full-resolution surface at continuous texel coordinates t (samples): texels joined by
+// triangles split along the (x+1, z)-(x, z+1) diagonal, as the grid mesh is (terrain.cpp).
+float surfaceSample(vec2 t) {
+    t = clamp(t, vec2(0.0), u_tile_layer.zw - 1.0);
+    ivec2 i = min(ivec2(t), ivec2(u_tile_layer.zw) - 2);
+    vec2 f = t - vec2(i);
+    float h00 = tileFetch(u_height, i, u_tiles, u_tile_layer).r;
+    float h10 = tileFetch(u_height, i + ivec2(1, 0), u_tiles, u_tile_layer).r;
+    float h01 = tileFetch(u_height, i + ivec2(0, 1), u_tiles, u_tile_layer).r;
+    float h11 = tileFetch(u_height, i + ivec2(1, 1), u_tiles, u_tile_layer).r;
+    return f.x + f.y <= 1.0 ? h00 + (h10 - h00) * f.x + (h01 - h00) * f.y
+                            : h11 + (h01 - h11) * (1.0 - f.x) + (h10 - h11) * (1.0 - f.y);
+}
 
 #ifdef VERTEX_SHADER
 out vec3 v_rel;        // camera-relative position (m)
@@ -38,6 +54,25 @@ float heightSample(vec2 texel) {
     return textureLod(u_height, tileCoord(texel, u_tiles, u_tile_layer), 0.0).r;
 }
 
+layout(binding = BINDING_TEX_4) uniform sampler2D u_bias;  // distance bias (m) at leaf-cell corners
+
+// The error metric's distance bias at texel coordinates t: bilinear between the corners of the
+// leaf cell holding t (the last cell may be narrower), with exact fetches so it matches
+// DistanceBias::at and neighbouring nodes agree on shared vertices.
+float distanceBias(vec2 t) {
+    if (u_bias_cells.w == 0) return 0.0;
+    vec2 size = u_tile_layer.zw - 1.0;
+    t = clamp(t, vec2(0.0), size);
+    float n = float(u_bias_cells.z);
+    ivec2 i = min(ivec2(t / n), u_bias_cells.xy - 1);
+    vec2 t0 = vec2(i) * n;
+    vec2 f = clamp((t - t0) / (min(t0 + n, size) - t0), 0.0, 1.0);
+    float g00 = texelFetch(u_bias, i, 0).r, g10 = texelFetch(u_bias, i + ivec2(1, 0), 0).r;
+    float g01 = texelFetch(u_bias, i + ivec2(0, 1), 0).r, g11 = texelFetch(u_bias, i + ivec2(1, 1), 0).r;
+    float top = g00 + (g10 - g00) * f.x;
+    return top + (g01 + (g11 - g01) * f.x - top) * f.y;
+}
+
 void main() {
     Instance inst = u_instances[gl_InstanceID];
     int side = u_quads + 1;
@@ -47,7 +82,7 @@ void main() {
     float h = u_height_map.y + u_height_map.x * heightSample(texelAt(xz));
     // Strugar's morph: distance to the unmorphed vertex, odd vertices slide onto the
     // coarser grid (toward their even neighbour) as morph goes 0 -> 1.
-    float dist = length(vec3(xz.x, h, xz.y));
+    float dist = length(vec3(xz.x, h, xz.y)) + distanceBias(texelAt(xz));
     float morph = 1.0 - clamp(inst.b.x - dist * inst.b.y, 0.0, 1.0);
     // A vertex at or past the map's far edge keeps its place on that axis (as cdlod.cpp).
     vec2 odd = fract(grid * 0.5) * 2.0 * vec2(lessThan(xz, u_map_max));
@@ -74,7 +109,7 @@ layout(binding = BINDING_TEX_3) uniform sampler2DArray u_detail;  // tangent-spa
 layout(location = 4) uniform vec4 u_bands;     // sand_top, grass_top, snow_start, band_blend
 layout(location = 5) uniform vec4 u_material;  // band_jitter, rock_slope, 1 / texture_scale_m, detail_distance_m
 layout(location = 6) uniform vec2 u_tex_offset;  // camera x, z modulo the texture period (m)
-layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 morph, 3 normals
+layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 morph, 3 normals, 4 screen error
 layout(location = 8) uniform int u_wireframe;
 
 in vec3 v_rel;
@@ -102,7 +137,16 @@ void layerSample(int layer, vec2 uv, out vec4 albedo, out vec3 detail) {
 void main() {
     vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
     float dist = length(v_rel);
-    if (u_terrain_view == 1 || u_terrain_view == 2 || u_terrain_view == 3) {
+    if (u_terrain_view == 4) {
+        // Vertical screen error: the drawn point and the full-resolution surface below or
+        // above it, both projected; alpha holds the error in pixels (vista bench terrain reads it).
+        float truth = u_height_map.y + u_height_map.x * surfaceSample(v_texel);
+        vec4 a = u_view_proj * vec4(v_rel, 1.0), b = u_view_proj * vec4(v_rel.x, truth, v_rel.z, 1.0);
+        float px = length((a.xy / a.w - b.xy / b.w) * 0.5 * u_viewport.xy);
+        float e = px / max(u_max_error_px, 1e-6);
+        vec3 c = e <= 1.0 ? mix(vec3(0.1, 0.25, 0.8), vec3(1.0, 0.9, 0.1), e) : mix(vec3(1.0, 0.4, 0.0), vec3(1.0, 0.0, 0.6), min(e - 1.0, 1.0));
+        o_color = vec4(c * (0.5 + 0.5 * max(dot(n, u_sun_dir.xyz), 0.0)), px);
+    } else if (u_terrain_view == 1 || u_terrain_view == 2 || u_terrain_view == 3) {
         vec3 c = n * 0.5 + 0.5;
         if (u_terrain_view == 1) c = lodColor(v_lod.x);
         if (u_terrain_view == 2) c = vec3(v_morph, 1.0 - v_morph, 0.2);

@@ -11,3 +11,10 @@ vec3 tileCoord(vec2 t, ivec4 tiles, vec4 layer) {
     vec2 local = t - vec2(tile) * float(tiles.z);
     return vec3((local + 0.5) / layer.xy, float(tile.y * tiles.x + tile.x));
 }
+
+// The texel at integer coordinates t (clamped to the map) of layer 0..: exact, no filtering.
+vec4 tileFetch(sampler2DArray tex, ivec2 t, ivec4 tiles, vec4 layer) {
+    t = clamp(t, ivec2(0), ivec2(layer.zw) - 1);
+    ivec2 tile = min(t / tiles.z, tiles.xy - 1);
+    return texelFetch(tex, ivec3(t - tile * tiles.z, tile.y * tiles.x + tile.x), 0);
+}

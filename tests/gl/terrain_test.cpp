@@ -198,3 +198,50 @@ TEST_CASE("gl: a heightmap split into texture tiles renders like one texture") {
     CAPTURE(max_diff);
     CHECK(differing <= int(images[0].size() / 500));
 }
+
+TEST_CASE("gl: the error metric keeps the measured screen error within its bound with fewer triangles") {
+    // Gentle hills with one rough quadrant: the rough part sets distance-only ranges for all.
+    test::TempDir dir("terrain-error");
+    std::mt19937 noise(3);
+    std::filesystem::path file = writeMap(dir, "hills.png", 257, 257, [&](int x, int z) {
+        float hills = 0.5f + 0.2f * std::sin(float(x) * 0.07f) * std::cos(float(z) * 0.05f);
+        float rough = x > 160 && z > 160 ? 0.02f * std::uniform_real_distribution<float>(-1, 1)(noise) : 0.0f;
+        return hills + rough;
+    });
+    Settings s = terrainOnly(file, 4096.0f, 300.0f);
+    FrameRenderer& r = renderer();
+    // The largest vertical screen error of a frame (the error view writes it to alpha).
+    auto measure = [&](Settings settings, const ViewParams& view, double& triangles) {
+        settings.terrain.view = TerrainView::Error;
+        Rendered out = render(r, settings, view);
+        triangles = double(r.terrain()->counters().triangles);
+        double worst = 0.0;
+        for (std::size_t i = 3; i < out.hdr.size(); i += 4) worst = std::max(worst, double(halfToFloat(out.hdr[i])));
+        return worst;
+    };
+    double error_triangles = 0, distance_triangles = 0, coarse_error = 0;
+    std::mt19937 rng(7);
+    for (int i = 0; i < 6; ++i) {
+        ViewParams v;
+        double x = std::uniform_real_distribution<double>(-1500, 1500)(rng), z = std::uniform_real_distribution<double>(-1500, 1500)(rng);
+        REQUIRE(r.prepare(s).empty());
+        v.position = {x, r.terrain()->heightAt(x, z) + 20.0 + 40.0 * i, z};
+        v.yaw_deg = 60.0 * i;
+        v.pitch_deg = -12.0;
+        v.width = 320;
+        v.height = 180;
+        CAPTURE(i);
+        Settings error = s, distance = s, coarse = s;
+        distance.terrain.lod_metric = LodMetric::Distance;
+        double t = 0;
+        CHECK(measure(error, v, t) <= 1.0);
+        error_triangles += t;
+        CHECK(measure(distance, v, t) <= 1.0);
+        distance_triangles += t;
+        // The measurement can fail: a loose bound leaves visible error.
+        coarse.terrain.max_error_px = 100.0f;
+        coarse_error = std::max(coarse_error, measure(coarse, v, t));
+    }
+    CHECK(coarse_error > 1.0);
+    CHECK(error_triangles < 0.95 * distance_triangles);
+}

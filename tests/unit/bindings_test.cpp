@@ -14,5 +14,6 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kTex1 == BINDING_TEX_1);
     CHECK(binding::kTex2 == BINDING_TEX_2);
     CHECK(binding::kTex3 == BINDING_TEX_3);
+    CHECK(binding::kTex4 == BINDING_TEX_4);
     CHECK(binding::kTerrainNodes == BINDING_TERRAIN_NODES);
 }

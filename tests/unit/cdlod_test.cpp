@@ -3,6 +3,7 @@
 // steps of at most one between neighbours, and morphed shared edges that coincide (no cracks).
 #include "renderer/camera.h"
 #include "terrain/cdlod.h"
+#include "terrain/lod_error.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -92,15 +93,15 @@ Rect texelRect(const SelectedNode& n, const TestTerrain& t, const glm::dvec3& ca
 // vertical, else along z) between lo and hi.
 std::vector<glm::dvec2> edgeVertices(const SelectedNode& n, const Rect& r, const Selection& sel, const TestTerrain& t,
                                      const glm::dvec3& cam, int grid, bool vertical, int fixed, int lo, int hi,
-                                     std::vector<double>* ks = nullptr) {
+                                     std::vector<double>* ks = nullptr, const DistanceBias* bias = nullptr) {
     double step = double(t.tree.leafTexels() << n.level) / double(grid);  // texels
     int quads = grid >> (n.level - n.node_level);
     std::vector<glm::dvec2> out;
     int g_fixed = int(std::lround((fixed - (vertical ? r.x0 : r.z0)) / step));
     for (int g = 0; g <= quads; ++g) {
         double k = 0;
-        glm::dvec2 p = vertical ? morphVertex(n, sel, t.mapping, t.map, cam, grid, g_fixed, g, &k)
-                                : morphVertex(n, sel, t.mapping, t.map, cam, grid, g, g_fixed, &k);
+        glm::dvec2 p = vertical ? morphVertex(n, sel, t.mapping, t.map, cam, grid, g_fixed, g, &k, bias)
+                                : morphVertex(n, sel, t.mapping, t.map, cam, grid, g, g_fixed, &k, bias);
         // Keep the vertices that land on the shared stretch, after morphing and clamping to
         // the map (a vertex past the map's edge lands on it).
         double along = vertical ? (p.y + t.half()) / t.mapping.texelSizeZ() : (p.x + t.half()) / t.mapping.texelSizeX();
@@ -123,12 +124,13 @@ struct Report {
     int pairs = 0, fine_coarse_pairs = 0, level_jumps = 0, cracks = 0;
 };
 
-// All selection invariants for one camera; `ks` (optional) collects edge morph factors.
+// All selection invariants for one camera, with an optional distance bias (its node
+// distances are box distance + the node's smallest bias; the top level has no outer range).
 Report checkSelection(const TestTerrain& t, const ViewParams& v, const LodSettings& lod, int grid,
-                      const Selection* given = nullptr) {
+                      const Selection* given = nullptr, const DistanceBias* bias = nullptr) {
     Frustum frustum = frustumFor(v);
     Selection own;
-    if (!given) selectNodes(t.tree, t.mapping, lod, v.position, frustum, own);
+    if (!given) selectNodes(t.tree, t.mapping, lod, v.position, frustum, own, bias);
     const Selection& sel = given ? *given : own;
     const glm::dvec3 cam = v.position;
     Report rep;
@@ -137,9 +139,9 @@ Report checkSelection(const TestTerrain& t, const ViewParams& v, const LodSettin
     // Ranges: a whole node or quadrant lies within its level's range and beyond the finer one.
     for (const SelectedNode& n : sel.nodes) {
         glm::dvec3 p = glm::clamp(glm::dvec3(0.0), n.min_rel, n.max_rel);
-        double d = glm::length(p);
+        double d = glm::length(p) + (bias ? double(bias->minAt(n.node_level, n.x, n.z)) : 0.0);
         double r = sel.ranges[std::size_t(n.level)];
-        if (n.node_level == n.level) rep.out_of_range += d > r;
+        if (n.node_level == n.level && n.level + 1 < int(sel.ranges.size())) rep.out_of_range += d > r;
         if (n.level > 0) rep.out_of_range += d <= sel.ranges[std::size_t(n.level - 1)];
         for (const glm::dvec4& pl : frustum) {
             glm::dvec3 c(pl.x >= 0 ? n.max_rel.x : n.min_rel.x, pl.y >= 0 ? n.max_rel.y : n.min_rel.y,
@@ -164,7 +166,7 @@ Report checkSelection(const TestTerrain& t, const ViewParams& v, const LodSettin
     }
     // A texel column (x/z square, leaf min/max in y) that reaches inside the top range and is
     // not wholly outside any frustum plane must be drawn: its ancestors all pass both tests.
-    const double top = sel.ranges.back() - 1e-6;
+    const double top = bias ? 1e300 : sel.ranges.back() - 1e-6;
     const double tx = t.mapping.texelSizeX(), tz = t.mapping.texelSizeZ();
     for (int z = 0; z < ch; ++z)
         for (int x = 0; x < cw; ++x) {
@@ -196,8 +198,8 @@ Report checkSelection(const TestTerrain& t, const ViewParams& v, const LodSettin
             int fixed = vertical ? (a.x1 == b.x0 ? a.x1 : a.x0) : (a.z1 == b.z0 ? a.z1 : a.z0);
             int lo = vertical ? std::max(a.z0, b.z0) : std::max(a.x0, b.x0);
             int hi = vertical ? std::min(a.z1, b.z1) : std::min(a.x1, b.x1);
-            auto ea = edgeVertices(na, a, sel, t, cam, grid, vertical, fixed, lo, hi);
-            auto eb = edgeVertices(nb, b, sel, t, cam, grid, vertical, fixed, lo, hi);
+            auto ea = edgeVertices(na, a, sel, t, cam, grid, vertical, fixed, lo, hi, nullptr, bias);
+            auto eb = edgeVertices(nb, b, sel, t, cam, grid, vertical, fixed, lo, hi, nullptr, bias);
             rep.cracks += !covered(ea, eb, tol) || !covered(eb, ea, tol);
         }
     return rep;
@@ -522,4 +524,76 @@ TEST_CASE("cdlod: the top level reaches the whole map, however few levels the tr
     REQUIRE(sel.ranges.size() == 1);
     CHECK(sel.ranges[0] > 70000.0);  // the farthest corner is ~70.9 km away
     CHECK(sel.nodes.size() == 1);
+}
+
+TEST_CASE("cdlod: with an error-metric distance bias, neighbours stay within one level and edges coincide") {
+    // Rough and smooth maps, so the bias varies from 0 to its ceiling across the map.
+    std::mt19937 rng(17);
+    int fine_coarse = 0, biased_nodes = 0;
+    for (int mi = 0; mi < 2; ++mi) {
+        TestTerrain t(257, 193, 8, 4096.0, 400.0, 30 + mi);
+        if (mi == 1)  // white noise on one half: rough cells next to smooth ones
+            for (int z = 0; z < 193; ++z)
+                for (int x = 128; x < 257; ++x) t.map.samples[std::size_t(z) * 257 + std::size_t(x)] = float(uniform(rng, 0, 1));
+        t.tree = MinMaxQuadtree(t.map, t.mapping, 8);
+        GridErrors errors(t.map, t.mapping, 8, t.tree.levels());
+        for (int i = 0; i < 40; ++i) {
+            ViewParams v = randomView(rng, t.half());
+            v.position.y = uniform(rng, 0, 400);
+            LodSettings lod = randomLod(rng);
+            lod.levels = 0;
+            lod.bias_slope = i % 4 == 0 ? 0.25 : i % 4 == 1 ? 1.0 : i % 4 == 2 ? 2.0 : 4.0;
+            const double scale = screenErrorScale(v.fov_deg, 64, 36), max_px = uniform(rng, 0.5, 4.0);
+            lod.base_range_m = calibratedBaseRange(t.tree, errors, t.mapping, lod, scale, max_px);
+            DistanceBias bias;
+            bias.build(t.tree, errors, t.mapping, lod, scale, max_px);
+            biased_nodes += bias.highest() > 0.0f;
+            CAPTURE(mi);
+            CAPTURE(i);
+            Report r = checkSelection(t, v, lod, i % 2 ? 8 : 16, nullptr, &bias);
+            requireClean(r);
+            fine_coarse += r.fine_coarse_pairs;
+        }
+    }
+    CHECK(fine_coarse > 100);
+    CHECK(biased_nodes > 40);
+}
+
+TEST_CASE("cdlod: a selection reused for a shadow frustum keeps exactly the nodes that touch it") {
+    TestTerrain t(257, 257, 8, 4096.0, 400.0, 12);
+    ViewParams v;
+    v.position = {100.0, 150.0, 200.0};
+    v.pitch_deg = -15.0;
+    Selection main, shadow;
+    selectNodes(t.tree, t.mapping, LodSettings{}, v.position, frustumFor(v), main);
+    REQUIRE(main.nodes.size() > 10);
+    // A narrower frustum looking the same way: a strict subset.
+    ViewParams narrow = v;
+    narrow.fov_deg = 20.0;
+    Frustum f = frustumFor(narrow);
+    cullSelection(main, f, shadow);
+    CHECK(shadow.ranges == main.ranges);
+    CHECK(shadow.morph_consts == main.morph_consts);
+    CHECK(shadow.nodes.size() < main.nodes.size());
+    CHECK(!shadow.nodes.empty());
+    std::size_t kept = 0;
+    for (const SelectedNode& n : main.nodes) {
+        bool inside = true;
+        for (const glm::dvec4& p : f) {
+            glm::dvec3 c(p.x >= 0 ? n.max_rel.x : n.min_rel.x, p.y >= 0 ? n.max_rel.y : n.min_rel.y,
+                         p.z >= 0 ? n.max_rel.z : n.min_rel.z);
+            inside = inside && glm::dot(glm::dvec3(p), c) + p.w >= 0.0;
+        }
+        if (!inside) continue;
+        REQUIRE(kept < shadow.nodes.size());
+        CHECK(shadow.nodes[kept].x == n.x);
+        CHECK(shadow.nodes[kept].z == n.z);
+        CHECK(shadow.nodes[kept].level == n.level);
+        ++kept;
+    }
+    CHECK(kept == shadow.nodes.size());
+    // Reuse allocates nothing.
+    const SelectedNode* data = shadow.nodes.data();
+    cullSelection(main, f, shadow);
+    CHECK(shadow.nodes.data() == data);
 }
