@@ -71,7 +71,7 @@ struct TerrainSettings {
     int grid = 32;                    //!< quads per node side (a leaf node spans this many texels)
     LodMetric lod_metric = LodMetric::Error;  //!< per-node screen error (terrain/lod_error.h) or distance only
     float max_error_px = 1.0f;        //!< px, largest vertical screen error the LOD may leave
-    float bias_slope = 2.0f;          //!< m/m, slope limit of the error metric's distance bias
+    float bias_slope = 2.0f;          //!< m/m, slope limit of the error metric's distance bias (lowered while it would raise the ranges)
     float base_range_m = 150.0f;      //!< m, LOD 0 range (raised to what node size and error need)
     float range_ratio = 2.0f;         //!< range growth per LOD level
     float morph_start = 0.7f;         //!< fraction of each level's span before morphing starts

@@ -116,6 +116,25 @@ double calibratedBaseRange(const MinMaxQuadtree& tree, const GridErrors& errors,
     return hi;
 }
 
+double usableBiasSlope(const MinMaxQuadtree& tree, const TerrainMapping& mapping, LodSettings lod, double base,
+                       double max_slope) {
+    std::vector<double> ends, starts;
+    auto needs = [&](double slope) {  // the base range the crack bounds alone ask for
+        lod.base_range_m = 1e-3;
+        lod.bias_slope = slope;
+        lodRanges(tree, mapping, lod, ends, starts);
+        return ends.empty() ? 0.0 : ends[0];
+    };
+    if (needs(max_slope) <= base) return max_slope;
+    double lo = 0.0, hi = max_slope;
+    if (needs(0.0) >= base) return 0.0;
+    for (int i = 0; i < 40; ++i) {
+        double mid = 0.5 * (lo + hi);
+        (needs(mid) <= base ? lo : hi) = mid;
+    }
+    return lo;
+}
+
 void DistanceBias::resize(const MinMaxQuadtree& tree, const TerrainMapping& mapping) {
     leaf_texels_ = tree.leafTexels();
     map_ = {mapping.width, mapping.height};

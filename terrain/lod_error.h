@@ -65,6 +65,12 @@ private:
 double calibratedBaseRange(const MinMaxQuadtree& tree, const GridErrors& errors, const TerrainMapping& mapping,
                            LodSettings lod, double error_scale, double max_error_px);
 
+// The largest bias slope <= max_slope that leaves the ranges at `base` (the calibrated
+// distance-only base range): the crack bounds grow with 1 + slope, and a slope that raised the
+// ranges beyond what the error needs would add triangles near the camera instead of saving them.
+double usableBiasSlope(const MinMaxQuadtree& tree, const TerrainMapping& mapping, LodSettings lod, double base,
+                       double max_slope);
+
 class DistanceBias {
 public:
     // g for the bound above; lod.bias_slope is lambda (> 0). Reuses its storage.

@@ -171,7 +171,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
         lod_.morph_start = s.morph_start;
         lod_.base_range_m = s.base_range_m;
         lod_.base_range_m = calibratedBaseRange(tree_, errors_, mapping_, lod_, error_scale, s.max_error_px);
-        lod_.bias_slope = error_metric ? s.bias_slope : 0.0;
+        lod_.bias_slope = error_metric ? usableBiasSlope(tree_, mapping_, lod_, lod_.base_range_m, s.bias_slope) : 0.0;
         if (error_metric)
             bias_.build(tree_, errors_, mapping_, lod_, error_scale, s.max_error_px);
         else

@@ -172,3 +172,23 @@ TEST_CASE("lod error: screen error scale is pixels per radian on the view axis")
     CHECK(screenErrorScale(90.0, 1280, 720) == doctest::Approx(360.0));
     CHECK(screenErrorScale(60.0, 640, 360) == doctest::Approx(180.0 / std::tan(30.0 * 3.14159265358979323846 / 180.0)));
 }
+
+TEST_CASE("lod error: the bias slope is lowered until the crack bounds fit in the calibrated ranges") {
+    Heightmap m = noiseMap(129, 129, 9);
+    TerrainMapping mapping{1280.0, 200.0, 0.0, 129, 129};
+    MinMaxQuadtree tree(m, mapping, 8);
+    LodSettings lod;
+    auto crackBase = [&](double slope) {
+        LodSettings l = lod;
+        l.base_range_m = 1e-3;
+        l.bias_slope = slope;
+        std::vector<double> ends, starts;
+        lodRanges(tree, mapping, l, ends, starts);
+        return ends[0];
+    };
+    CHECK(usableBiasSlope(tree, mapping, lod, crackBase(2.0) * 1.01, 2.0) == 2.0);
+    CHECK(usableBiasSlope(tree, mapping, lod, crackBase(0.0) * 0.99, 2.0) == 0.0);
+    double slope = usableBiasSlope(tree, mapping, lod, crackBase(1.0), 2.0);
+    CHECK(slope == doctest::Approx(1.0).epsilon(1e-3));
+    CHECK(crackBase(slope) <= crackBase(1.0) * (1 + 1e-9));
+}
