@@ -1,0 +1,89 @@
+// The [lights] section of a scene file: culling method and its parameters, explicit lights,
+// generation volumes and animation. Not yet part of config/settings.h: describe() lists the
+// plain keys for a SettingsVisitor, and parse/format functions handle the list keys below.
+//
+// List keys (the ini format for explicit lights and generation volumes). Each entry is one key
+// `light.NAME` or `volume.NAME`, NAME made of letters, digits and '_' and unique in the
+// section; entries keep file order. The value is a type word and a position, then keyword groups
+// in any order; omitted groups keep the defaults of Light / LightVolume (lighting/lights.h):
+//
+//   light.lantern = point 10 42 -5  radius 12  color 1 0.7 0.4  intensity 30
+//   light.beam    = spot 0 50 0  radius 40  color 1 1 1  intensity 200  direction 0 -1 0  cone 20 30
+//   volume.village = box -200 30 -150  200 40 150  count 16 1 12  radius 18  intensity 40
+//                    saturation 0.5  value 1  jitter 0.3  seed 23        (one line in the file)
+//
+//   point|spot X Y Z        m, world position (|X|,|Y|,|Z| <= 1e8)
+//   radius R                m, [0, 1e5]; 0 reaches nothing
+//   color R G B             linear RGB, each [0, 1e3]
+//   intensity I             irradiance scale at 1 m, [0, 1e7]
+//   direction X Y Z         spot axis, not all zero (normalised on use)
+//   cone INNER OUTER        deg, spot half-angles, 0 <= INNER <= OUTER <= 180
+//   box X0 Y0 Z0 X1 Y1 Z1   m, world, two opposite corners
+//   count NX NY NZ          lights per axis, each [1, 10000], product <= kMaxVolumeLights
+//   saturation S, value V   HSV of the random hue, [0, 1]
+//   jitter J                fraction of a grid cell, [0, 1]
+//   seed N                  integer [0, 2^32 - 1]
+//
+// Wiring (for config/): the loader hands `light.*` / `volume.*` keys of [lights] to
+// parseLightSpec / parseVolumeSpec and the writer emits formatLightSpec / formatVolumeSpec;
+// SettingsVisitor has no list field yet. This file and light_settings.cpp use only headers
+// from config/ and lighting/lights.h (no lights.cpp), so they can move into vista_config.
+#pragma once
+
+#include "config/visitor.h"
+#include "lighting/lights.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vista {
+
+inline constexpr std::uint64_t kMaxVolumeLights = 1000000;  // lights one volume may make
+
+enum class LightCulling : int { Naive, Tiled, Clustered, Hashed };
+enum class LightTileSize : int { Px16, Px32 };
+inline int tilePixels(LightTileSize s) { return s == LightTileSize::Px16 ? 16 : 32; }
+
+struct NamedLight {
+    std::string name;
+    Light light;
+};
+struct NamedLightVolume {
+    std::string name;
+    LightVolume volume;
+};
+
+struct LightsSettings {
+    bool enabled = true;                               //!< local lights (point, spot); off: no culling pass, no buffers
+    LightCulling culling = LightCulling::Clustered;    //!< naive | tiled | clustered | hashed
+    LightTileSize tile_size = LightTileSize::Px16;     //!< px, screen tile of tiled and clustered: 16 | 32
+    int cluster_slices = 0;         //!< depth slices, 0..256; 0 = 002's cubic clusters (ratio 1 + 2 tan(fov/2) / tiles_y), at most kMaxAutoSlices
+    float cluster_near_m = 0.0f;    //!< m, near_0 of near_k = near_0 * ratio^k, 0..1e4; 0 = the camera's near plane
+    float cluster_far_m = 4000.0f;  //!< m, depth the bounded slices reach; the last slice also takes all beyond, 1..1e7
+    int max_lights_per_cell = 256;  //!< list capacity per tile or cluster, 1..65536; overflow is counted and warned
+    float hash_node_m = 0.0f;       //!< m, leaf node size of the hashed light octree, 0..1e5; 0 = half the mean light radius
+    float hash_memory_mb = 256.0f;  //!< MiB of GPU tables + index list, 1..65536; beyond it the node size doubles until it fits
+    float hash_slack = 0.25f;       //!< extra hash-table room kept for incremental updates, fraction 0..4
+    LightAnimation animation;       //!< animation = none|circle|bob, animation_amplitude_m, animation_period_s, animation_fraction, animation_seed
+    std::vector<NamedLight> lights;          //!< light.NAME keys
+    std::vector<NamedLightVolume> volumes;   //!< volume.NAME keys
+};
+
+inline constexpr int kMaxAutoSlices = 64;  // slices of cluster_slices = 0 at most
+
+// Lists the plain keys of [lights] (not the light.* / volume.* list keys) with units and ranges.
+void describe(SettingsVisitor& v, LightsSettings& s);
+
+// Parses the value of a light.NAME key (format above) into out. Empty on success, otherwise a
+// message naming the bad token and what is accepted; out is then unspecified.
+std::string parseLightSpec(std::string_view text, Light& out);
+std::string parseVolumeSpec(std::string_view text, LightVolume& out);
+// Canonical text of a light / volume; parse(format(x)) reproduces x exactly (floats round-trip).
+std::string formatLightSpec(const Light& light);
+std::string formatVolumeSpec(const LightVolume& volume);
+// Whether name is a valid NAME of a light.NAME / volume.NAME key.
+bool isValidListName(std::string_view name);
+// The scene's lights before animation are collectLights(lights, volumes) (lighting/lights.h).
+
+}  // namespace vista
