@@ -113,7 +113,7 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
     request.capture_ldr = &ldr;
     for (const ViewParams& view : randomPoses(terrain, s.terrain, o.poses, o.seed, kWidth, kHeight)) {
         glm::dmat4 view_proj(viewMatrices(view).view_proj);
-        const double error_scale = screenErrorScale(view.fov_deg, view.width, view.height);
+        const double error_scale = screenErrorScale(view.fov_deg, view.height);
         std::vector<double> samples;
         for (int r = 0; r < 15; ++r) {  // selection is microseconds: take the median of repeats
             auto t0 = std::chrono::steady_clock::now();

@@ -54,8 +54,7 @@ void levelError(const Heightmap& map, int leaf, int spacing, glm::ivec2 cells, s
 
 }  // namespace
 
-double screenErrorScale(double fov_y_deg, int width, int height) {
-    (void)width;
+double screenErrorScale(double fov_y_deg, int height) {
     double t = std::tan(glm::radians(std::clamp(fov_y_deg, 1.0, 179.0)) * 0.5);
     return double(std::max(height, 1)) / (2.0 * t);
 }

@@ -32,7 +32,7 @@ namespace vista {
 // longer; the bound leaves that out (at 60 degrees and 16:9 it would more than double every
 // range) and relies on the per-cell maxima being far above typical errors: vista bench
 // terrain measures the rendered error, and the tests check it stays within the bound.
-double screenErrorScale(double fov_y_deg, int width, int height);
+double screenErrorScale(double fov_y_deg, int height);
 
 // Vertical error (m) of each LOD level's grid against the full-resolution surface, per leaf
 // cell. Level L's grid has vertices every 2^L texels (clamped to the map's far edge) with

@@ -276,7 +276,7 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
         SceneTargets t;
     };
     terrain.select(rc.view.position, glm::dmat4(rc.matrices.view_proj), s,
-                   screenErrorScale(rc.view.fov_deg, rc.view.width, rc.view.height));
+                   screenErrorScale(rc.view.fov_deg, rc.view.height));
     const Data& d = graph.addPass<Data>("terrain.gbuffer",
         [&](PassBuilder& b, Data& data) {
             data.t.hdr = b.write(targets.hdr);

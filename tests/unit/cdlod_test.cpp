@@ -543,7 +543,7 @@ TEST_CASE("cdlod: with an error-metric distance bias, neighbours stay within one
             LodSettings lod = randomLod(rng);
             lod.levels = 0;
             lod.bias_slope = i % 4 == 0 ? 0.25 : i % 4 == 1 ? 1.0 : i % 4 == 2 ? 2.0 : 4.0;
-            const double scale = screenErrorScale(v.fov_deg, 64, 36), max_px = uniform(rng, 0.5, 4.0);
+            const double scale = screenErrorScale(v.fov_deg, 36), max_px = uniform(rng, 0.5, 4.0);
             lod.base_range_m = calibratedBaseRange(t.tree, errors, t.mapping, lod, scale, max_px);
             DistanceBias bias;
             bias.build(t.tree, errors, t.mapping, lod, scale, max_px);

@@ -169,8 +169,8 @@ TEST_CASE("lod error: the calibrated base range is the smallest meeting the boun
 }
 
 TEST_CASE("lod error: screen error scale is pixels per radian on the view axis") {
-    CHECK(screenErrorScale(90.0, 1280, 720) == doctest::Approx(360.0));
-    CHECK(screenErrorScale(60.0, 640, 360) == doctest::Approx(180.0 / std::tan(30.0 * 3.14159265358979323846 / 180.0)));
+    CHECK(screenErrorScale(90.0, 720) == doctest::Approx(360.0));
+    CHECK(screenErrorScale(60.0, 360) == doctest::Approx(180.0 / std::tan(30.0 * 3.14159265358979323846 / 180.0)));
 }
 
 TEST_CASE("lod error: the bias slope is lowered until the crack bounds fit in the calibrated ranges") {
