@@ -75,6 +75,63 @@ public:
         changed |= ImGui::Combo(f.key, &v, names.data(), int(names.size()));
         tooltip(f, "");
     }
+    // A list key: its entries (name and text, clipped so long lists stay cheap) under a node
+    // with their count; the selected entry's values are edited as fields, and entries can be
+    // added (a copy of the selected one, or a default one) and removed.
+    void list(const FieldInfo& f, ListField& entries) override {
+        if (!section_open_) return;
+        const bool open = ImGui::TreeNode(f.key, "%s (%zu)", f.key, entries.size());
+        tooltip(f, "");
+        if (!open) return;
+        ImGuiStorage& storage = *ImGui::GetStateStorage();
+        const ImGuiID selected_id = ImGui::GetID("selected");
+        int selected = storage.GetInt(selected_id, -1);
+        if (selected >= int(entries.size())) selected = -1;
+        if (entries.size() > 0) {
+            const float row = ImGui::GetTextLineHeightWithSpacing();
+            const float rows = float(std::min<std::size_t>(entries.size(), 8));
+            ImGui::BeginChild("entries", ImVec2(0.0f, row * rows + row * 0.5f), true, ImGuiWindowFlags_HorizontalScrollbar);
+            ImGuiListClipper clipper;
+            clipper.Begin(int(entries.size()));
+            while (clipper.Step()) {
+                for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+                    const std::string label = entries.name(std::size_t(i)) + " = " + entries.text(std::size_t(i)) +
+                                              "##" + std::to_string(i);
+                    if (ImGui::Selectable(label.c_str(), i == selected)) selected = i == selected ? -1 : i;
+                }
+            }
+            ImGui::EndChild();
+        }
+        if (ImGui::SmallButton("add")) {
+            const std::string text = selected >= 0 ? entries.text(std::size_t(selected)) : entries.defaultText();
+            std::string name;
+            for (std::size_t n = entries.size() + 1; name.empty(); ++n) {
+                name = std::string(f.key) + "_" + std::to_string(n);
+                for (std::size_t i = 0; i < entries.size() && !name.empty(); ++i)
+                    if (entries.name(i) == name) name.clear();
+            }
+            if (entries.set(name, text).empty()) {
+                selected = int(entries.size()) - 1;
+                changed = true;
+            }
+        }
+        if (selected >= 0) {
+            ImGui::SameLine();
+            if (ImGui::SmallButton("remove")) {
+                entries.erase(std::size_t(selected));
+                selected = -1;
+                changed = true;
+            }
+        }
+        if (selected >= 0) {
+            ImGui::PushID(selected);
+            ImGui::TextUnformatted((std::string(f.key) + "." + entries.name(std::size_t(selected))).c_str());
+            entries.describeEntry(std::size_t(selected), *this);
+            ImGui::PopID();
+        }
+        storage.SetInt(selected_id, selected);
+        ImGui::TreePop();
+    }
     void finish() {
         if (section_open_) ImGui::PopID();
         section_open_ = false;

@@ -132,7 +132,7 @@ std::string accepted(const std::string&) { return ""; }
 std::string accepted(int, Names names) { return join(names); }
 
 // Routes the eight field kinds to one Derived::visit(info, value, limits...), so each
-// visitor below is a single generic function.
+// visitor below is a single generic function, plus Derived::visitList() for list keys.
 template <class Derived>
 class Visitor : public SettingsVisitor {
 public:
@@ -144,6 +144,7 @@ public:
     void field(const FieldInfo& i, glm::dvec3& v, double lo, double hi) override { self().visit(i, v, lo, hi); }
     void field(const FieldInfo& i, std::string& v) override { self().visit(i, v); }
     void choice(const FieldInfo& i, int& v, Names names) override { self().visit(i, v, names); }
+    void list(const FieldInfo& i, ListField& l) override { self().visitList(i, l); }
 
 private:
     Derived& self() { return static_cast<Derived&>(*this); }
@@ -152,14 +153,38 @@ private:
 struct Section {
     std::string name;
     std::vector<std::string> keys;
+    std::vector<std::string> lists;  // PREFIX of the PREFIX.NAME list keys
 };
+
+// "light" of the list key "light.lantern"; "" for a plain key.
+std::string_view listPrefix(std::string_view key) {
+    const auto dot = key.find('.');
+    return dot == key.npos ? std::string_view{} : key.substr(0, dot);
+}
+
+bool isListKey(const Section& section, std::string_view key) {
+    const std::string_view prefix = listPrefix(key);
+    return !prefix.empty() && std::ranges::find(section.lists, prefix) != section.lists.end();
+}
+
+bool hasKey(const Section& section, std::string_view key) {
+    return std::ranges::find(section.keys, key) != section.keys.end() || isListKey(section, key);
+}
+
+// The keys an error lists as accepted: the plain keys, then PREFIX.NAME for each list.
+std::vector<std::string> acceptedKeys(const Section& section) {
+    std::vector<std::string> out = section.keys;
+    for (const std::string& prefix : section.lists) out.push_back(prefix + ".NAME");
+    return out;
+}
 
 class NameCollector final : public Visitor<NameCollector> {
 public:
     std::vector<Section> sections;
-    void section(const char* name, const char*) override { sections.push_back({name, {}}); }
+    void section(const char* name, const char*) override { sections.push_back({name, {}, {}}); }
     template <class T, class... L>
     void visit(const FieldInfo& i, T&, const L&...) { sections.back().keys.push_back(i.key); }
+    void visitList(const FieldInfo& i, ListField&) { sections.back().lists.push_back(i.key); }
 };
 
 // Sets the one field [section] key from text, or says why not.
@@ -178,6 +203,17 @@ public:
             error = "[" + std::string(section_) + "] " + i.key + " = " + std::string(text_) + " " + why +
                     "; accepted: " + accepted(v, limits...) + unit;
         }
+    }
+    // key_ is PREFIX.NAME: sets (replaces or appends) the entry NAME.
+    void visitList(const FieldInfo& i, ListField& list) {
+        if (!inSection_ || listPrefix(key_) != i.key) return;
+        const std::string_view name = key_.substr(listPrefix(key_).size() + 1);
+        const std::string key = "[" + std::string(section_) + "] " + std::string(key_);
+        if (!isValidListName(name))
+            error = key + ": the name '" + std::string(name) + "' is not accepted; accepted: " + i.key +
+                    ".NAME with NAME made of letters, digits and _";
+        else if (const std::string why = list.set(name, text_); !why.empty())
+            error = key + " = " + std::string(text_) + " is not accepted: " + why;
     }
 
 private:
@@ -199,6 +235,10 @@ public:
         if (*i.unit) hint = hint.empty() ? i.unit : i.unit + (", " + hint);
         out += "; " + std::string(i.help) + (hint.empty() ? "" : " (" + hint + ")") + "\n";
         out += i.key + (" = " + format(v, limits...)) + "\n";
+    }
+    void visitList(const FieldInfo& i, ListField& list) {
+        out += "; " + std::string(i.help) + " (one " + i.key + ".NAME key per entry, NAME: letters, digits, _)\n";
+        for (std::size_t e = 0; e < list.size(); ++e) out += i.key + ("." + list.name(e)) + " = " + list.text(e) + "\n";
     }
 };
 
@@ -280,8 +320,21 @@ private:
             }
         }
         line = trim(line);
+        l.longValue_.reset();
+        if (line.size() + 2 > size_t(size) && !line.starts_with('[')) {
+            // inih takes at most size - 2 characters a line, but values (a list entry far from the
+            // origin, a long path) may be longer: inih gets "key =" and onKey the value kept here.
+            const auto delimiter = line.find_first_of("=:");  // inih's delimiters
+            if (delimiter != line.npos && delimiter + 3 <= size_t(size)) {
+                l.longValue_ = std::string(trim(line.substr(delimiter + 1)));
+                l.pending_ = l.line_;
+                l.pendingText_ = line;
+                line = line.substr(0, delimiter + 1);
+            }
+        }
         if (line.size() + 2 > size_t(size)) {
-            l.error(l.line_, "line is too long; accepted: up to " + std::to_string(size - 2) + " characters");
+            l.error(l.line_, "line is too long; accepted: a section or key of up to " + std::to_string(size - 3) +
+                                 " characters");
             line = {};
         } else if (line.starts_with('[')) {
             l.header(line);
@@ -298,7 +351,7 @@ private:
     static int onKey(void* self, const char*, const char* key, const char* value) {
         auto& l = *static_cast<Loader*>(self);
         l.pending_ = 0;
-        l.key(key, value);
+        l.key(key, l.longValue_ ? std::string_view(*l.longValue_) : std::string_view(value));
         return 1;
     }
 
@@ -327,14 +380,26 @@ private:
         const Section* section = find(sections_, *section_);
         if (!section) return;
         const std::string name = "[" + section->name + "] " + key;
-        if (std::ranges::find(section->keys, key) == section->keys.end())
-            return error(line_, unknown("unknown key " + name, didYouMean(key, section->keys), section->keys));
+        if (!hasKey(*section, key)) return error(line_, unknownKey(*section, key));
         if (const auto [it, fresh] = seen_.try_emplace(section->name + "\n" + key, line_); !fresh)
             return error(line_, name + " is set twice, on lines " + std::to_string(it->second) + " and " +
                                     std::to_string(line_) + "; the second is ignored");
         Applier apply(section->name, key, value);
         describe(apply, settings_);
         if (!apply.error.empty()) error(line_, apply.error);
+    }
+
+    // "unknown key [section] key" with a suggestion: a list key's prefix is matched against the
+    // section's lists, and one that belongs to another section says which.
+    std::string unknownKey(const Section& section, const std::string& key) const {
+        const std::string what = "unknown key [" + section.name + "] " + key;
+        const std::string_view prefix = listPrefix(key);
+        if (prefix.empty()) return unknown(what, didYouMean(key, section.keys), acceptedKeys(section));
+        for (const Section& other : sections_)
+            if (&other != &section && isListKey(other, key))
+                return what + "; " + std::string(prefix) + ".NAME keys belong in [" + other.name + "]";
+        const std::string guess = didYouMean(prefix, section.lists);
+        return unknown(what, guess.empty() ? "" : guess + key.substr(prefix.size()), acceptedKeys(section));
     }
 
     void error(int line, std::string message) { errors_.push_back({file_, line, std::move(message)}); }
@@ -347,6 +412,7 @@ private:
     int line_ = 0;
     int pending_ = 0;  // line handed to inih as key = value that has not reached onKey yet
     std::string pendingText_;
+    std::optional<std::string> longValue_;  // value of the current line when inih gets only its key
     std::optional<std::string> section_;  // none before the first header
     std::map<std::string, int> seen_;     // "section\nkey" -> line
 };
@@ -377,15 +443,26 @@ InputErrors applyOverride(std::string_view assignment, Settings& s) {
     if (eq == assignment.npos || dot == name.npos || dot == 0 || dot + 1 == name.size())
         return fail("cannot parse \"" + std::string(assignment) +
                     "\"; accepted: --set section.key=value, e.g. --set window.width=1920");
-    const std::string section = name.substr(0, dot), key = name.substr(dot + 1);
     const std::vector<Section> sections = collectNames(s);
+    // The last dot splits section and key, except in a list key: lights.light.lantern is
+    // [lights] light.lantern.
+    std::string section = name.substr(0, dot), key = name.substr(dot + 1);
+    for (auto d = dot; d != 0 && d != name.npos; d = name.rfind('.', d - 1)) {
+        const Section* candidate = find(sections, std::string_view(name).substr(0, d));
+        if (candidate && isListKey(*candidate, std::string_view(name).substr(d + 1))) {
+            section = name.substr(0, d), key = name.substr(d + 1);
+            break;
+        }
+    }
     std::vector<std::string> all;  // suggestions name the whole section.key
-    for (const Section& sec : sections)
+    for (const Section& sec : sections) {
         for (const std::string& k : sec.keys) all.push_back(sec.name + "." + k);
+        for (const std::string& prefix : sec.lists) all.push_back(sec.name + "." + prefix + name.substr(dot));
+    }
     const Section* found = find(sections, section);
     if (!found) return fail(unknown("unknown section [" + section + "]", didYouMean(name, all), sectionNames(sections)));
-    if (std::ranges::find(found->keys, key) == found->keys.end())
-        return fail(unknown("unknown key [" + section + "] " + key, didYouMean(name, all), found->keys));
+    if (!hasKey(*found, key))
+        return fail(unknown("unknown key [" + section + "] " + key, didYouMean(name, all), acceptedKeys(*found)));
     Applier apply(section, key, trim(assignment.substr(eq + 1)));
     describe(apply, s);
     return apply.error.empty() ? InputErrors{} : fail(apply.error);

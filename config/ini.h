@@ -16,12 +16,14 @@ namespace vista {
 // Reads file over s (keys the file omits keep their current value). Unknown sections and
 // keys (with a did-you-mean suggestion), malformed and out-of-range values, and duplicate
 // keys are reported with file:line and what is accepted; a bad value leaves the field as it was.
+// A list key PREFIX.NAME (light.lantern in [lights]) replaces the entry NAME or appends one.
 InputErrors loadIniFile(const std::filesystem::path& file, Settings& s);
 // Same, from text; name is used as the file name in errors.
 InputErrors loadIniString(std::string_view text, const std::string& name, Settings& s);
 
 // Applies one "section.key=value" override (the --set syntax); the section may itself
-// contain dots ("postfx.tonemap.op=aces"). Errors use "--set" as the file name.
+// contain dots ("postfx.tonemap.op=aces"), and so may a list key ("lights.light.lamp=point 0 9 0"
+// sets [lights] light.lamp). Errors use "--set" as the file name.
 InputErrors applyOverride(std::string_view assignment, Settings& s);
 
 // The whole of s as an ini file, each key preceded by a comment with its help, unit and

@@ -1,6 +1,7 @@
 // The one description of every setting: keys, units, ranges and help text.
 #include "config/settings.h"
 
+#include <algorithm>
 #include <array>
 
 namespace vista {
@@ -46,9 +47,11 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {
-    static constexpr std::array<const char*, 2> views{"final", "depth"};
+    static constexpr std::array<const char*, 5> views{"final", "depth", "albedo", "normals", "lights"};
     v.section("debug", "debug views and helpers");
-    v.choice({"view", "", "what the screen shows"}, s.view, views);
+    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel"},
+             s.view, views);
+    v.field({"heat_max", "lights", "light count shown red in the lights view"}, s.heat_max, 1.0f, 65536.0f);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
     v.field({"grid_spacing", "m", "distance between minor grid lines"}, s.grid_spacing, 0.01f, 100000.0f);
 }
@@ -88,13 +91,43 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
 }
 
 void describe(SettingsVisitor& v, SkySettings& s) {
-    v.section("sky", "sky background and sun direction");
+    static constexpr std::array<const char*, 2> sun_modes{"angles", "time"};
+    static constexpr std::array<const char*, 2> mie_phases{"cornette_shanks", "henyey_greenstein"};
+    v.section("sky", "physically based atmosphere and the sun");
     v.field({"enabled", "", "draw the sky"}, s.enabled);
-    v.field({"sun_azimuth_deg", "deg", "sun heading, clockwise from -z"}, s.sun_azimuth_deg, -360.0f, 360.0f);
-    v.field({"sun_elevation_deg", "deg", "sun angle above the horizon"}, s.sun_elevation_deg, -90.0f, 90.0f);
-    v.field({"sun_illuminance", "", "HDR intensity of the sun light"}, s.sun_illuminance, 0.0f, 1000.0f);
-    v.field({"zenith_color", "", "linear RGB at the zenith"}, s.zenith_color, 0.0f, 100.0f);
-    v.field({"horizon_color", "", "linear RGB at the horizon"}, s.horizon_color, 0.0f, 100.0f);
+    v.choice({"sun_mode", "", "angles: azimuth/elevation keys; time: latitude, day and solar time"}, s.sun_mode, sun_modes);
+    v.field({"sun_azimuth_deg", "deg", "sun heading, clockwise from -z (sun_mode = angles)"}, s.sun_azimuth_deg, -360.0f, 360.0f);
+    v.field({"sun_elevation_deg", "deg", "sun angle above the horizon (sun_mode = angles)"}, s.sun_elevation_deg, -90.0f, 90.0f);
+    v.field({"time_of_day_h", "h", "apparent solar time, 12 = noon (sun_mode = time)"}, s.time_of_day_h, 0.0f, 24.0f);
+    v.field({"latitude_deg", "deg", "latitude, north positive (sun_mode = time)"}, s.latitude_deg, -90.0f, 90.0f);
+    v.field({"day_of_year", "day", "1 = 1 January (sun_mode = time)"}, s.day_of_year, 1.0f, 366.0f);
+    v.field({"sun_illuminance", "", "HDR scale of the solar irradiance at the top of the atmosphere"}, s.sun_illuminance, 0.0f, 1000.0f);
+    v.field({"sun_angular_radius_deg", "deg", "radius of the drawn sun disk"}, s.sun_angular_radius_deg, 0.05f, 5.0f);
+    v.field({"sun_limb_darkening", "", "limb darkening u: I = 1 - u (1 - cos)"}, s.sun_limb_darkening, 0.0f, 1.0f);
+    v.field({"planet_radius_km", "km", "ground radius"}, s.planet_radius_km, 100.0f, 100000.0f);
+    v.field({"atmosphere_height_km", "km", "top of the atmosphere above the ground"}, s.atmosphere_height_km, 1.0f, 1000.0f);
+    v.field({"rayleigh_scattering", "1/Mm", "Rayleigh scattering at sea level, RGB"}, s.rayleigh_scattering, 0.0f, 1000.0f);
+    v.field({"rayleigh_scale_height_km", "km", "Rayleigh density exp(-h/H)"}, s.rayleigh_scale_height_km, 0.1f, 100.0f);
+    v.field({"mie_scattering", "1/Mm", "aerosol scattering at sea level"}, s.mie_scattering, 0.0f, 1000.0f);
+    v.field({"mie_absorption", "1/Mm", "aerosol absorption at sea level"}, s.mie_absorption, 0.0f, 1000.0f);
+    v.field({"mie_scale_height_km", "km", "aerosol density exp(-h/H)"}, s.mie_scale_height_km, 0.01f, 100.0f);
+    v.field({"mie_g", "", "aerosol phase asymmetry"}, s.mie_g, -0.99f, 0.99f);
+    v.choice({"mie_phase", "", "aerosol phase function"}, s.mie_phase, mie_phases);
+    v.field({"ozone_absorption", "1/Mm", "ozone absorption at its peak, RGB"}, s.ozone_absorption, 0.0f, 1000.0f);
+    v.field({"ozone_center_km", "km", "altitude of the ozone peak"}, s.ozone_center_km, 0.0f, 1000.0f);
+    v.field({"ozone_half_width_km", "km", "half width of the ozone tent (0: no ozone)"}, s.ozone_half_width_km, 0.0f, 1000.0f);
+    v.field({"ground_albedo", "", "ground reflectance seen by multiple scattering"}, s.ground_albedo, 0.0f, 1.0f);
+    v.field({"transmittance_width", "texels", "transmittance LUT size along mu"}, s.transmittance_width, 16, 1024);
+    v.field({"transmittance_height", "texels", "transmittance LUT size along altitude"}, s.transmittance_height, 8, 512);
+    v.field({"transmittance_steps", "", "integration steps per transmittance texel"}, s.transmittance_steps, 4, 512);
+    v.field({"multiscatter_size", "texels", "multiple-scattering LUT size per side"}, s.multiscatter_size, 8, 128);
+    v.field({"multiscatter_steps", "", "steps along each multiple-scattering ray"}, s.multiscatter_steps, 4, 256);
+    v.field({"sky_view_width", "texels", "sky-view LUT size in azimuth"}, s.sky_view_width, 16, 1024);
+    v.field({"sky_view_height", "texels", "sky-view LUT size in elevation"}, s.sky_view_height, 16, 1024);
+    v.field({"sky_view_steps", "", "steps along each sky-view (or from-space) ray"}, s.sky_view_steps, 4, 256);
+    v.field({"rebuild_sun_deg", "deg", "sun motion that triggers a sky-view rebuild"}, s.rebuild_sun_deg, 0.0f, 10.0f);
+    v.field({"zenith_color", "", "unused by the physical sky (old scenes load)"}, s.zenith_color, 0.0f, 100.0f);
+    v.field({"horizon_color", "", "unused by the physical sky (old scenes load)"}, s.horizon_color, 0.0f, 100.0f);
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
@@ -118,6 +151,12 @@ void describe(SettingsVisitor& v, TonemapSettings& s) {
 
 }  // namespace
 
+bool isValidListName(std::string_view name) {
+    return !name.empty() && std::ranges::all_of(name, [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    });
+}
+
 void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.window);
     describe(v, s.camera);
@@ -125,6 +164,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.debug);
     describe(v, s.terrain);
     describe(v, s.sky);
+    describe(v, s.lights);  // lighting/light_settings.cpp
     describe(v, s.postfx);
     describe(v, s.exposure);
     describe(v, s.tonemap);

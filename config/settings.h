@@ -4,6 +4,7 @@
 #pragma once
 
 #include "config/visitor.h"
+#include "lighting/light_settings.h"  // LightsSettings: part of vista_config, no renderer code
 
 #include <glm/vec3.hpp>
 
@@ -48,12 +49,13 @@ struct CaptureSettings {
     std::string out = "out";                       //!< output directory
 };
 
-enum class DebugView : int { Final, Depth };
+enum class DebugView : int { Final, Depth, Albedo, Normals, Lights };
 
 struct DebugSettings {
     DebugView view = DebugView::Final;
     bool grid = true;           //!< reference grid on the y = 0 plane
     float grid_spacing = 10.0f; //!< m between minor lines; major lines every 10
+    float heat_max = 32.0f;     //!< lights per pixel shown red in the lights view, 1..65536
 };
 
 enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
@@ -88,13 +90,48 @@ struct TerrainSettings {
     float rock_slope = 0.75f;         //!< normal.y below which slopes turn to rock
 };
 
+//! How the sun's direction is given: explicit angles, or latitude, day of year and solar time.
+enum class SunMode : int { Angles, Time };
+enum class SkyMiePhase : int { CornetteShanks, HenyeyGreenstein };
+
+//! The physically based atmosphere (Hillaire 2020, sky/atmosphere.h). Earth defaults after
+//! Bruneton 2017; coefficients in 1/Mm (1e-6 per metre) at the altitude where the profile is 1.
 struct SkySettings {
     bool enabled = true;
-    float sun_azimuth_deg = 135.0f;  //!< deg, clockwise from -z (north)
-    float sun_elevation_deg = 35.0f; //!< deg above the horizon
-    float sun_illuminance = 3.0f;    //!< relative units: HDR scale of the sun light
-    glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< linear RGB
-    glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< linear RGB
+    SunMode sun_mode = SunMode::Angles;  //!< angles: sun_azimuth/elevation_deg; time: the three below
+    float sun_azimuth_deg = 135.0f;  //!< deg, clockwise from -z (north), -360..360
+    float sun_elevation_deg = 35.0f; //!< deg above the horizon, -90..90
+    float time_of_day_h = 10.0f;     //!< h, apparent local solar time (12 = sun on the meridian), 0..24
+    float latitude_deg = 45.0f;      //!< deg, north positive, -90..90
+    float day_of_year = 172.0f;      //!< day, 1 = 1 January (fractional allowed), 1..366
+    float sun_illuminance = 3.0f;    //!< HDR units: solar irradiance at the top of the atmosphere, 0..1000
+    float sun_angular_radius_deg = 0.2679f;  //!< deg, drawn sun disk (0.27 = real), 0.05..5
+    float sun_limb_darkening = 0.6f; //!< u of I = 1 - u (1 - cos), 0..1
+    float planet_radius_km = 6360.0f;       //!< km, ground, 100..100000
+    float atmosphere_height_km = 100.0f;    //!< km, top above the ground, 1..1000
+    glm::vec3 rayleigh_scattering{5.802f, 13.558f, 33.1f};  //!< 1/Mm at sea level, RGB 680/550/440 nm, 0..1000
+    float rayleigh_scale_height_km = 8.0f;  //!< km, 0.1..100
+    float mie_scattering = 3.996f;          //!< 1/Mm at sea level, 0..1000
+    float mie_absorption = 0.444f;          //!< 1/Mm at sea level, 0..1000
+    float mie_scale_height_km = 1.2f;       //!< km, 0.01..100
+    float mie_g = 0.8f;                     //!< phase asymmetry, -0.99..0.99
+    SkyMiePhase mie_phase = SkyMiePhase::CornetteShanks;
+    glm::vec3 ozone_absorption{0.650f, 1.881f, 0.085f};  //!< 1/Mm at the peak, 0..1000
+    float ozone_center_km = 25.0f;          //!< km, peak of the tent profile, 0..1000
+    float ozone_half_width_km = 15.0f;      //!< km, 0 disables ozone, 0..1000
+    glm::vec3 ground_albedo{0.1f, 0.1f, 0.1f};  //!< Lambertian, for multiple scattering, 0..1
+    // Quality knobs (vista bench sky measures them; defaults sit on the knee of error vs cost).
+    int transmittance_width = 256;   //!< texels along mu, 16..1024
+    int transmittance_height = 64;   //!< texels along altitude, 8..512
+    int transmittance_steps = 40;    //!< integration steps per texel, 4..512
+    int multiscatter_size = 32;      //!< texels per side, 8..128
+    int multiscatter_steps = 20;     //!< steps along each of its 64 rays, 4..256
+    int sky_view_width = 192;        //!< texels in azimuth, 16..1024
+    int sky_view_height = 108;       //!< texels in elevation (sqrt horizon mapping), 16..1024
+    int sky_view_steps = 32;         //!< steps along each view ray, 4..256 (also for views from space)
+    float rebuild_sun_deg = 0.05f;   //!< deg the sun must move before the sky-view LUT is rebuilt, 0..10
+    glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< unused by the physical sky; old scenes load
+    glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< unused by the physical sky; old scenes load
 };
 
 struct PostfxSettings {
@@ -121,6 +158,7 @@ struct Settings {
     DebugSettings debug;
     TerrainSettings terrain;
     SkySettings sky;
+    LightsSettings lights;      // [lights], with the light.NAME / volume.NAME lists
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]
     TonemapSettings tonemap;    // [postfx.tonemap]

@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace vista {
 namespace {
@@ -40,6 +41,13 @@ std::string str(float v) {
     return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
 }
 
+// A range bound for people to read, as the ini loader writes ranges: 100000 rather than 1e+05.
+std::string bound(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 // Reads the numbers of one keyword group, checking each against [lo, hi].
 class Reader {
 public:
@@ -58,7 +66,7 @@ public:
                 return false;
             }
             if (out[k] < lo || out[k] > hi) {
-                error = std::string(what) + ": " + std::string(tok) + " is outside [" + str(lo) + ", " + str(hi) + "]";
+                error = std::string(what) + ": " + std::string(tok) + " is outside [" + bound(lo) + ", " + bound(hi) + "]";
                 return false;
             }
         }
@@ -69,6 +77,36 @@ private:
     std::vector<std::string_view> t_;
     std::size_t i_ = 0;
 };
+
+// One entry's values as fields, for the panel (NamedList::describeEntry); ranges as in the parsers.
+void describeLight(SettingsVisitor& v, Light& l) {
+    static constexpr std::array<const char*, 2> types{"point", "spot"};
+    v.choice({"type", "", "point or spot"}, l.type, types);
+    v.field({"position", "m", "world position"}, l.position, -kMaxCoord, kMaxCoord);
+    v.field({"radius", "m", "influence radius; 0 reaches nothing"}, l.radius_m, 0.0f, 1.0e5f);
+    v.field({"color", "", "linear RGB"}, l.color, 0.0f, 1.0e3f);
+    v.field({"intensity", "", "irradiance scale at 1 m"}, l.intensity, 0.0f, 1.0e7f);
+    if (l.type != LightType::Spot) return;
+    v.field({"direction", "", "spot axis, not all zero"}, l.direction, -1.0e6f, 1.0e6f);
+    v.field({"cone_inner", "deg", "half-angle of full intensity, at most cone_outer"}, l.inner_deg, 0.0f, 180.0f);
+    v.field({"cone_outer", "deg", "half-angle where the light ends"}, l.outer_deg, 0.0f, 180.0f);
+}
+
+void describeVolume(SettingsVisitor& v, LightVolume& g) {
+    v.field({"box_min", "m", "box corner"}, g.min_m, -kMaxCoord, kMaxCoord);
+    v.field({"box_max", "m", "opposite box corner"}, g.max_m, -kMaxCoord, kMaxCoord);
+    v.field({"count_x", "", "lights along x"}, g.count.x, 1, 10000);
+    v.field({"count_y", "", "lights along y"}, g.count.y, 1, 10000);
+    v.field({"count_z", "", "lights along z"}, g.count.z, 1, 10000);
+    v.field({"radius", "m", "radius of each light"}, g.radius_m, 0.0f, 1.0e5f);
+    v.field({"intensity", "", "irradiance scale at 1 m of each light"}, g.intensity, 0.0f, 1.0e7f);
+    v.field({"saturation", "", "HSV saturation of the random hues"}, g.saturation, 0.0f, 1.0f);
+    v.field({"value", "", "HSV value of the random hues"}, g.value, 0.0f, 1.0f);
+    v.field({"jitter", "", "random offset, fraction of a grid cell"}, g.jitter, 0.0f, 1.0f);
+    double seed = g.seed;  // a double holds every uint32 exactly, an int does not
+    v.field({"seed", "", "random hues and offsets"}, seed, 0.0, 4294967295.0);
+    g.seed = std::uint32_t(seed);
+}
 
 }  // namespace
 
@@ -94,13 +132,14 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     int seed = int(s.animation.seed & 0x7FFFFFFFu);
     v.field({"animation_seed", "", "which lights move and their phases"}, seed, 0, 0x7FFFFFFF);
     s.animation.seed = std::uint32_t(seed);
-}
-
-bool isValidListName(std::string_view name) {
-    if (name.empty()) return false;
-    for (char c : name)
-        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
-    return true;
+    NamedList lights(s.lights, &NamedLight::light, parseLightSpec, formatLightSpec, describeLight);
+    v.list({"light", "", "a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
+                         "direction X Y Z, cone INNER OUTER (deg)"},
+           lights);
+    NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
+    v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "
+                          "radius R (m), intensity I, saturation S, value V, jitter J, seed N"},
+           volumes);
 }
 
 std::string parseLightSpec(std::string_view text, Light& out) {
@@ -156,8 +195,10 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out) {
             for (int k = 0; k < 3; ++k)
                 if (v[k] != std::floor(v[k])) return "count: " + str(v[k]) + " is not a whole number";
             out.count = {int(v[0]), int(v[1]), int(v[2])};
-            if (lightCount(out) > kMaxVolumeLights)
-                return "count: " + std::to_string(lightCount(out)) + " lights is more than " + std::to_string(kMaxVolumeLights);
+            // lightCount() (lights.cpp) would tie vista_config to the renderer; counts are >= 1 here.
+            const std::uint64_t n = std::uint64_t(out.count.x) * std::uint64_t(out.count.y) * std::uint64_t(out.count.z);
+            if (n > kMaxVolumeLights)
+                return "count: " + std::to_string(n) + " lights is more than " + std::to_string(kMaxVolumeLights);
         } else if (key == "radius") {
             if (!r.numbers(key, v, 1, 0.0, 1e5, error)) return error;
             out.radius_m = float(v[0]);

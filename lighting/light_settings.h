@@ -1,6 +1,6 @@
-// The [lights] section of a scene file: culling method and its parameters, explicit lights,
-// generation volumes and animation. Not yet part of config/settings.h: describe() lists the
-// plain keys for a SettingsVisitor, and parse/format functions handle the list keys below.
+// The [lights] section of a scene file (Settings::lights): culling method and its parameters,
+// explicit lights, generation volumes and animation. describe() lists the plain keys and the two
+// list keys below for a SettingsVisitor; the parse/format functions are the lists' text format.
 //
 // List keys (the ini format for explicit lights and generation volumes). Each entry is one key
 // `light.NAME` or `volume.NAME`, NAME made of letters, digits and '_' and unique in the
@@ -24,10 +24,11 @@
 //   jitter J                fraction of a grid cell, [0, 1]
 //   seed N                  integer [0, 2^32 - 1]
 //
-// Wiring (for config/): the loader hands `light.*` / `volume.*` keys of [lights] to
-// parseLightSpec / parseVolumeSpec and the writer emits formatLightSpec / formatVolumeSpec;
-// SettingsVisitor has no list field yet. This file and light_settings.cpp use only headers
-// from config/ and lighting/lights.h (no lights.cpp), so they can move into vista_config.
+// Wiring: describe() hands each list to SettingsVisitor::list() as a NamedList (config/visitor.h)
+// over parseLightSpec / formatLightSpec and parseVolumeSpec / formatVolumeSpec, so the ini loader,
+// --set lights.light.NAME=..., the writer, `vista check` and the panel all handle them. A scene
+// without light.* / volume.* keys has empty lists. This file and light_settings.cpp use only
+// headers from config/ and lighting/lights.h (no lights.cpp): they are part of vista_config.
 #pragma once
 
 #include "config/visitor.h"
@@ -72,7 +73,8 @@ struct LightsSettings {
 
 inline constexpr int kMaxAutoSlices = 64;  // slices of cluster_slices = 0 at most
 
-// Lists the plain keys of [lights] (not the light.* / volume.* list keys) with units and ranges.
+// Lists the keys of [lights] with units and ranges: the plain keys, then the lists `light`
+// (lights) and `volume` (volumes).
 void describe(SettingsVisitor& v, LightsSettings& s);
 
 // Parses the value of a light.NAME key (format above) into out. Empty on success, otherwise a
@@ -82,8 +84,7 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out);
 // Canonical text of a light / volume; parse(format(x)) reproduces x exactly (floats round-trip).
 std::string formatLightSpec(const Light& light);
 std::string formatVolumeSpec(const LightVolume& volume);
-// Whether name is a valid NAME of a light.NAME / volume.NAME key.
-bool isValidListName(std::string_view name);
+// Whether a NAME of light.NAME / volume.NAME is valid: isValidListName() (config/visitor.h).
 // The scene's lights before animation are collectLights(lights, volumes) (lighting/lights.h).
 
 }  // namespace vista

@@ -19,10 +19,12 @@ namespace {
 
 using Value = std::variant<bool, int, float, double, glm::vec3, glm::dvec3, std::string>;
 
-// Every field as "section.key" -> value, so whole Settings can be compared exactly.
+// Every field as "section.key" -> value, and every list as "section.prefix" -> its entries as
+// "NAME = TEXT" lines, so whole Settings can be compared exactly.
 class Flatten final : public SettingsVisitor {
 public:
     std::map<std::string, Value> values;
+    std::map<std::string, std::string> lists;
     void section(const char* name, const char*) override { section_ = name; }
     void field(const FieldInfo& i, bool& v) override { add(i, v); }
     void field(const FieldInfo& i, int& v, int, int) override { add(i, v); }
@@ -32,24 +34,32 @@ public:
     void field(const FieldInfo& i, glm::dvec3& v, double, double) override { add(i, v); }
     void field(const FieldInfo& i, std::string& v) override { add(i, v); }
     void choice(const FieldInfo& i, int& v, std::span<const char* const>) override { add(i, v); }
+    void list(const FieldInfo& i, ListField& l) override {
+        std::string& text = lists[section_ + "." + i.key];
+        for (std::size_t e = 0; e < l.size(); ++e) text += l.name(e) + " = " + l.text(e) + "\n";
+    }
 
 private:
     void add(const FieldInfo& i, Value v) { values[section_ + "." + i.key] = std::move(v); }
     std::string section_;
 };
 
-std::map<std::string, Value> flatten(Settings s) {
+Flatten flattenAll(Settings s) {
     Flatten f;
     describe(f, s);
-    return f.values;
+    return f;
 }
 
-// The keys whose values differ (bit for bit), space-separated; "" when a and b are equal.
+std::map<std::string, Value> flatten(Settings s) { return flattenAll(std::move(s)).values; }
+
+// The keys and lists whose values differ (bit for bit), space-separated; "" when a and b are equal.
 std::string differences(const Settings& a, const Settings& b) {
-    const auto fa = flatten(a), fb = flatten(b);
+    const Flatten fa = flattenAll(a), fb = flattenAll(b);
     std::string out;
-    for (const auto& [key, value] : fa)
-        if (!(value == fb.at(key))) out += key + " ";
+    for (const auto& [key, value] : fa.values)
+        if (!(value == fb.values.at(key))) out += key + " ";
+    for (const auto& [key, text] : fa.lists)
+        if (text != fb.lists.at(key)) out += key + " ";
     return out;
 }
 
@@ -70,6 +80,11 @@ public:
     void field(const FieldInfo& i, std::string& v) override { v = "a dir/\"quoted\" name=" + std::string(i.key); }
     void choice(const FieldInfo&, int& v, std::span<const char* const> names) override {
         v = (v + 1) % int(names.size());
+    }
+    // Adds an entry and perturbs its values through the panel's view of it.
+    void list(const FieldInfo&, ListField& l) override {
+        REQUIRE(l.set("perturbed", l.defaultText()) == "");
+        l.describeEntry(l.size() - 1, *this);
     }
 
 private:
@@ -333,7 +348,7 @@ TEST_CASE("config: lines that are neither key = value nor a section header are r
         "fov_deg = 70\n"
         "[camera]\n"
         "fov_deg = 80\n"
-        "speed = " + std::string(300, '9') + "\n"
+        + std::string(300, 'k') + " = 9\n"
         "pitch_deg = 5\n",
         "scene.ini", s);
     INFO(messages(errors));
@@ -348,6 +363,16 @@ TEST_CASE("config: lines that are neither key = value nor a section header are r
     CHECK(s.camera.pitch_deg == 5.0f);
 
     CHECK(oneError("width = 800\n[window]\n", s, 1) == "width = 800 comes before any [section]");
+}
+
+TEST_CASE("config: a value longer than inih's line limit is read whole") {
+    Settings s;
+    const std::string path = "dir/" + std::string(400, 'p') + ".path";
+    CHECK(messages(loadIniString("[capture]\npath = " + path + "  ; a comment\nframes = 3\n", "scene.ini", s)) == "");
+    CHECK(s.capture.path == path);
+    CHECK(s.capture.frames == 3);
+    CHECK(oneError("[camera]\nfov_deg = " + std::string(300, '9') + "\n", s, 2) ==
+          "[camera] fov_deg = " + std::string(300, '9') + " is out of range; accepted: 5..120 (deg)");
 }
 
 TEST_CASE("config: several errors in one file are all reported in line order") {
@@ -480,6 +505,10 @@ TEST_CASE("config: save then load reproduces every field exactly") {
     for (const auto& [key, value] : before) {
         INFO(key);
         CHECK(!(value == defaults.at(key)));  // so the round trip below really tests every field
+    }
+    for (const auto& [key, text] : flattenAll(s).lists) {
+        INFO(key);
+        CHECK(contains(text, "perturbed = "));
     }
 
     const std::string text = saveIniString(s);

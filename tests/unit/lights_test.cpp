@@ -273,6 +273,7 @@ struct KeyLister : SettingsVisitor {
         CHECK(value >= 0);
         CHECK(value < int(names.size()));
     }
+    void list(const FieldInfo& i, ListField&) override { keys.push_back(i.key); }
 };
 }  // namespace
 
