@@ -20,7 +20,7 @@ std::vector<ProgramKey> allPrograms() {
     std::vector<ProgramKey> programs = {
         {"renderer/shaders/copy.glsl", {}},
         {"renderer/shaders/grid.glsl", {}},
-        {"renderer/shaders/debug_depth.glsl", {}},
+        {"renderer/shaders/debug_view.glsl", {}},
         {"renderer/shaders/nonfinite.glsl", {}},
         {"sky/shaders/background.glsl", {}},
     };
@@ -181,7 +181,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
     TextureHandle display = addTonemapPass(graph, rc, scene.hdr, s);
-    if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug.view, scene);
+    if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug, scene);
 
     if (request.capture_hdr || request.capture_ldr)
         addReadbackPass(graph, request.capture_hdr ? scene.hdr : display, request);

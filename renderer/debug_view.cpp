@@ -1,25 +1,37 @@
 // Debug views of scene targets.
 #include "renderer/debug_view.h"
 
+#include "renderer/bindings.h"
+
 namespace vista {
 
-TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, DebugView view, const SceneTargets& targets) {
+TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings& debug,
+                               const SceneTargets& targets) {
     struct Data {
-        TextureHandle source, out;
+        TextureHandle depth, source, normal, out;
+        int view = 1;
     };
-    (void)view;  // one view so far: depth
     const Data& d = graph.addPass<Data>("debug.view",
         [&](PassBuilder& b, Data& data) {
-            data.source = b.read(targets.depth);
+            TextureHandle source;
+            if (debug.view == DebugView::Albedo) source = targets.albedo;
+            if (debug.view == DebugView::Normals) source = targets.normal;
+            if (debug.view == DebugView::Lights) source = targets.light_heat;
+            data.view = source.valid() ? int(debug.view) : int(DebugView::Depth);
+            data.depth = b.read(targets.depth);
+            if (source.valid()) data.source = b.read(source);
             TextureDesc desc = b.desc(targets.depth);
             desc.format = PixelFormat::RGBA8;
             data.out = b.write(b.create("debug.view", desc));
         },
-        [&rc](const Data& data, PassContext& ctx) {
+        [&rc, heat_max = debug.heat_max](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("renderer/shaders/debug_depth.glsl")->id());
-            glBindTextureUnit(0, ctx.texture(data.source));
+            glUseProgram(rc.shaders.get("renderer/shaders/debug_view.glsl")->id());
+            glUniform1i(0, data.view);
+            glUniform1f(1, heat_max);
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            if (data.source.valid()) glBindTextureUnit(binding::kTex1, ctx.texture(data.source));
             drawFullscreen(rc);
         });
     return d.out;

@@ -1,5 +1,6 @@
-// "debug.view": shows an intermediate target instead of the final image ([debug] view).
-// Depth: log-scaled distance from reversed-Z depth, near white to far dark, sky blue-black.
+// "debug.view": shows an intermediate target instead of the final image ([debug] view):
+// depth, the G-buffer's albedo or normals, or the heat map of local lights evaluated per
+// pixel (renderer/shaders/debug_view.glsl says how each is drawn).
 #pragma once
 
 #include "config/settings.h"
@@ -9,6 +10,9 @@
 namespace vista {
 
 // Returns the RGBA8 display image; the final image's passes are then culled by the graph.
-TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, DebugView view, const SceneTargets& targets);
+// A view whose target this frame lacks (no G-buffer without terrain, no heat map without
+// local lights) shows depth, or the sky colour when nothing was drawn.
+TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings& debug,
+                               const SceneTargets& targets);
 
 }  // namespace vista

@@ -17,7 +17,7 @@
 
 namespace vista {
 
-enum class PixelFormat : std::uint8_t { RGBA8, RGBA16F, RGBA32F, RG16F, R16F, R32F, R32UI, Depth32F };
+enum class PixelFormat : std::uint8_t { RGBA8, RGB10A2, RGBA16F, RGBA32F, RG16F, R16F, R32F, R32UI, Depth32F };
 
 struct TextureDesc {
     int width = 1;

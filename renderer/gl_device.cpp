@@ -9,6 +9,7 @@ namespace vista {
 GLenum glInternalFormat(PixelFormat format) {
     switch (format) {
         case PixelFormat::RGBA8: return GL_RGBA8;
+        case PixelFormat::RGB10A2: return GL_RGB10_A2;
         case PixelFormat::RGBA16F: return GL_RGBA16F;
         case PixelFormat::RGBA32F: return GL_RGBA32F;
         case PixelFormat::RG16F: return GL_RG16F;
@@ -22,7 +23,7 @@ GLenum glInternalFormat(PixelFormat format) {
 
 std::uint32_t GlDevice::createTexture(const TextureDesc& desc, const std::string& name) {
     gl::Texture t = gl::Texture::create2D(desc.width, desc.height, glInternalFormat(desc.format), desc.levels, name);
-    if (desc.format == PixelFormat::R32UI || desc.format == PixelFormat::Depth32F) {
+    if (desc.format == PixelFormat::R32UI || desc.format == PixelFormat::Depth32F || desc.format == PixelFormat::RGB10A2) {
         glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }

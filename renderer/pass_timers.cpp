@@ -78,13 +78,13 @@ std::vector<FrameTiming> PassTimers::collect(bool wait) {
 GLuint CounterReadback::request(std::uint64_t frame, const std::string& name) {
     gl::Buffer buffer;
     if (spare_.empty()) {
-        buffer = gl::Buffer::create(sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT, "counter " + name);
+        buffer = gl::Buffer::create(2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT, "counter " + name);
     } else {
         buffer = std::move(spare_.back());
         spare_.pop_back();
     }
-    GLuint zero = 0;
-    glNamedBufferSubData(buffer.id(), 0, sizeof zero, &zero);
+    GLuint zero[2] = {0, 0};
+    glNamedBufferSubData(buffer.id(), 0, sizeof zero, zero);
     GLuint id = buffer.id();
     pending_.push_back(Pending{frame, name, std::move(buffer), nullptr});
     return id;
@@ -105,9 +105,9 @@ std::vector<CounterReadback::Value> CounterReadback::collect(bool wait) {
         Pending& p = pending_.front();
         GLenum status = glClientWaitSync(p.fence, GL_SYNC_FLUSH_COMMANDS_BIT, wait ? GLuint64(10'000'000'000) : 0);
         if (status == GL_TIMEOUT_EXPIRED) break;
-        GLuint value = 0;
-        glGetNamedBufferSubData(p.buffer.id(), 0, sizeof value, &value);
-        done.push_back(Value{p.frame, p.name, value});
+        GLuint words[2] = {0, 0};
+        glGetNamedBufferSubData(p.buffer.id(), 0, sizeof words, words);
+        done.push_back(Value{p.frame, p.name, std::uint64_t(words[0]) | std::uint64_t(words[1]) << 32});
         GLsync fence = p.fence;
         spare_.push_back(std::move(p.buffer));
         pending_.pop_front();

@@ -74,7 +74,9 @@ public:
         std::string name;
         std::uint64_t value;
     };
-    // A zeroed buffer holding one uint for frame's counter name; write it on the GPU this frame.
+    // A zeroed buffer of two uints for frame's counter name, read back as the 64-bit value
+    // low | high << 32: shaders add to the low word and carry into the high one
+    // (renderer/shaders/counters.glsl), or use the low word alone. Write it on the GPU this frame.
     GLuint request(std::uint64_t frame, const std::string& name);
     // Call after the frame's commands are submitted.
     void endFrame();
