@@ -2,6 +2,7 @@
 // the window loop, the capture runner or the checker.
 #include "app/cli.h"
 
+#include "app/bench_sky.h"
 #include "app/bench_terrain.h"
 #include "app/camera_path.h"
 #include "app/capture.h"
@@ -170,6 +171,15 @@ int runCli(int argc, char** argv) {
     bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
 
+    SceneOptions sky_scene;
+    BenchSkyOptions sky_opts;
+    std::string sky_backend = "osmesa", sky_size, sky_json;
+    CLI::App* bench_sky = bench_cmd->add_subcommand("sky", "atmosphere LUT sizes: PSNR against the CPU reference, build and frame cost");
+    sky_scene.add(bench_sky);
+    bench_sky->add_option("--size", sky_size, "frame size for the timings, WxH (default 320x180)");
+    bench_sky->add_option("--backend", sky_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_sky->add_option("--json", sky_json, "also write the results as JSON");
+
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
@@ -200,6 +210,18 @@ int runCli(int argc, char** argv) {
         terrain_opts.json = terrain_json;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchTerrain(s, terrain_opts);
+    }
+    if (*bench_sky) {
+        Settings s;
+        if (!sky_scene.load(s)) return 2;
+        if (!sky_size.empty() && (std::sscanf(sky_size.c_str(), "%dx%d", &sky_opts.width, &sky_opts.height) != 2 ||
+                                  sky_opts.width < 1 || sky_opts.height < 1 || sky_opts.width > 16384 || sky_opts.height > 16384)) {
+            std::fprintf(stderr, "vista: --size %s: accepted WxH, each 1..16384\n", sky_size.c_str());
+            return 2;
+        }
+        sky_opts.json = sky_json;
+        sky_opts.backend = sky_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchSky(s, sky_opts);
     }
 
     const SceneOptions& scene = *run_cmd ? run_scene : SceneOptions{};

@@ -8,7 +8,7 @@
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
 #include "app/scene.h"
-#include "sky/background.h"
+#include "sky/atmosphere.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -22,8 +22,8 @@ std::vector<ProgramKey> allPrograms() {
         {"renderer/shaders/grid.glsl", {}},
         {"renderer/shaders/debug_view.glsl", {}},
         {"renderer/shaders/nonfinite.glsl", {}},
-        {"sky/shaders/background.glsl", {}},
     };
+    for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
@@ -76,7 +76,7 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     u.view_proj = rc.matrices.view_proj;
     u.inv_view_proj = rc.matrices.inv_view_proj;
     u.camera_world = glm::vec4(glm::vec3(view.position), 1.0f);
-    glm::dvec3 sun = directionFromAngles(settings.sky.sun_azimuth_deg, settings.sky.sun_elevation_deg);
+    glm::dvec3 sun = sunDirection(settings.sky);
     u.sun_dir = glm::vec4(glm::vec3(sun), settings.sky.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
     u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
@@ -177,7 +177,12 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
-    if (s.sky.enabled) addSkyBackgroundPass(graph, rc, s.sky, scene);
+    if (s.sky.enabled) {
+        if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
+        sky_->addPasses(graph, rc, s.sky, scene);
+    } else {
+        sky_.reset();  // a disabled feature keeps nothing allocated
+    }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
     TextureHandle display = addTonemapPass(graph, rc, scene.hdr, s);

@@ -10,6 +10,7 @@
 #include "renderer/render_context.h"
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
+#include "sky/atmosphere.h"
 #include "terrain/terrain.h"
 
 #include <cstdint>
@@ -55,6 +56,7 @@ public:
     // problems (bad heightmap ...); the feature is then left out.
     InputErrors prepare(const Settings& settings);
     Terrain* terrain() { return terrain_.get(); }
+    SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
@@ -80,6 +82,7 @@ private:
     gl::Buffer frame_uniforms_;
     std::uint64_t frame_ = 0;
     std::unique_ptr<Terrain> terrain_;
+    std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame
 };

@@ -59,7 +59,7 @@ TEST_CASE("gl: capture writes PNGs of the requested size and a valid stats JSON"
     CHECK(stats["backend"] == "osmesa");
     CHECK(stats["size"] == nlohmann::json::array({96, 54}));
     CHECK(stats["reference_copy_ms"].get<double>() > 0.0);
-    for (const char* pass : {"frame.clear", "terrain.gbuffer", "sky.background", "postfx.tonemap", "capture.readback"})
+    for (const char* pass : {"frame.clear", "terrain.gbuffer", "sky.atmosphere", "postfx.tonemap", "capture.readback"})
         CHECK_MESSAGE(contains(stats["passes_executed"], pass), pass);
     REQUIRE(stats["frames"].size() == 3);
     for (const auto& frame : stats["frames"]) {

@@ -1,0 +1,182 @@
+// Sky benchmark: quality presets of the atmosphere LUTs, each measured in one run: PSNR of the
+// sky against the double-precision reference for noon, sunset and twilight views (at 128x72,
+// the reference costs ~0.1 ms a pixel), the GPU time of rebuilding every LUT, and the
+// per-frame cost (sky pass alone, and with the sky-view LUT rebuilt as when the sun moves).
+#include "app/bench_sky.h"
+
+#include "app/frame.h"
+#include "app/scene.h"
+#include "app/stats.h"
+#include "sky/atmosphere.h"
+#include "sky/sky_reference_image.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace vista {
+namespace {
+
+struct Preset {
+    const char* name;
+    int t_w, t_h, t_steps, ms_size, ms_steps, v_w, v_h, v_steps;
+};
+
+// "default" is SkySettings' defaults; the others bracket it.
+constexpr Preset kPresets[] = {
+    {"low", 64, 16, 12, 16, 8, 64, 36, 12},
+    {"medium", 128, 32, 24, 24, 12, 128, 72, 20},
+    {"default", 256, 64, 40, 32, 20, 192, 108, 32},
+    {"high", 512, 128, 80, 64, 40, 384, 216, 64},
+};
+
+void apply(const Preset& p, SkySettings& s) {
+    s.transmittance_width = p.t_w;
+    s.transmittance_height = p.t_h;
+    s.transmittance_steps = p.t_steps;
+    s.multiscatter_size = p.ms_size;
+    s.multiscatter_steps = p.ms_steps;
+    s.sky_view_width = p.v_w;
+    s.sky_view_height = p.v_h;
+    s.sky_view_steps = p.v_steps;
+}
+
+struct View {
+    const char* name;
+    float sun_elevation;
+    double altitude, yaw, pitch;
+};
+
+constexpr View kViews[] = {
+    {"noon", 60.0f, 2.0, 0.0, 10.0},
+    {"sunset", 2.0f, 2.0, 180.0, 5.0},
+    {"twilight", -6.0f, 2.0, 180.0, 10.0},
+};
+
+double passMs(const FrameTiming& t, const std::string& name) {
+    for (const auto& p : t.passes)
+        if (p.name == name) return p.gpu_ms;
+    return 0.0;
+}
+
+}  // namespace
+
+int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
+    std::string error;
+    auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
+    if (!context) {
+        std::fprintf(stderr, "vista: %s\n", error.c_str());
+        return 1;
+    }
+    FrameRenderer renderer(vistaRoot());
+    // What this bench measures: the sky and the copy that sets the cost unit (the rest of the
+    // frame compiles on first use).
+    std::vector<std::string> programs = skyPrograms();
+    programs.push_back("renderer/shaders/copy.glsl");
+    for (const std::string& file : programs)
+        if (!renderer.shaders().get(file)) error += renderer.shaders().lastError();
+    if (!error.empty()) {
+        std::fprintf(stderr, "vista: shader compilation failed:\n%s", error.c_str());
+        return 1;
+    }
+    Settings base = scene;
+    base.terrain.enabled = false;  // the sky alone covers the frame
+    base.debug.grid = false;
+    base.sky.enabled = true;
+    base.sky.sun_mode = SunMode::Angles;
+    base.sky.sun_azimuth_deg = 180.0f;
+
+    std::fprintf(stderr, "bench sky: building the CPU reference...\n");
+    const MultipleScatteringTable table(atmosphereParams(base.sky));
+    constexpr int kRefW = 128, kRefH = 72;
+    std::vector<std::vector<glm::vec3>> references;
+    for (const View& v : kViews) {
+        Settings s = base;
+        s.sky.sun_elevation_deg = v.sun_elevation;
+        references.push_back(
+            referenceSkyImage(s.sky, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, kRefW, kRefH}, table));
+    }
+
+    const double copy_ms = renderer.measureReferenceCopy(o.width, o.height);
+    nlohmann::json presets = nlohmann::json::array();
+    std::printf("%-8s %-26s %9s %9s %9s %9s %12s %12s %12s\n", "preset", "T / MS / view (steps)", "noon_dB", "sunset_dB",
+                "twil_dB", "psnr_min", "lut_build_ms", "sky_copies", "+view_copies");
+    for (const Preset& preset : kPresets) {
+        Settings s = base;
+        apply(preset, s.sky);
+        nlohmann::json psnr = nlohmann::json::object();
+        double psnr_min = 1e9;
+        std::vector<std::uint16_t> hdr;
+        FrameRequest request;
+        request.capture_hdr = &hdr;
+        for (std::size_t i = 0; i < std::size(kViews); ++i) {
+            const View& v = kViews[i];
+            s.sky.sun_elevation_deg = v.sun_elevation;
+            renderer.render(s, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, kRefW, kRefH}, 0.0, request);
+            double db = skyPsnrDb(hdr, references[i]);
+            psnr[v.name] = db;
+            psnr_min = std::min(psnr_min, db);
+        }
+        renderer.timers().collect(true);
+
+        // Timings at the bench size, sunset: every LUT rebuilt, then steady frames.
+        s.sky.sun_elevation_deg = 2.0f;
+        ViewParams view{{0.0, 2.0, 0.0}, 150.0, 10.0, 60.0, 0.5, o.width, o.height};
+        FrameRequest none;
+        std::vector<double> build, view_ms, sky_ms;
+        for (int r = 0; r < 4; ++r) {
+            renderer.sky()->invalidate();
+            renderer.render(s, view, 0.0, none);
+            FrameTiming t = renderer.timers().collect(true).back();
+            if (r == 0) continue;  // first use of a program (JIT on llvmpipe)
+            build.push_back(passMs(t, "sky.transmittance") + passMs(t, "sky.multiscatter") + passMs(t, "sky.view"));
+            view_ms.push_back(passMs(t, "sky.view"));
+        }
+        for (int r = 0; r < 5; ++r) {
+            renderer.render(s, view, 0.0, none);
+            sky_ms.push_back(passMs(renderer.timers().collect(true).back(), "sky.atmosphere"));
+        }
+        double lut_build = median(build), sky = median(sky_ms), with_view = sky + median(view_ms);
+        char label[64];
+        std::snprintf(label, sizeof label, "%dx%d/%d %d/%d %dx%d/%d", preset.t_w, preset.t_h, preset.t_steps,
+                      preset.ms_size, preset.ms_steps, preset.v_w, preset.v_h, preset.v_steps);
+        std::printf("%-8s %-26s %9.1f %9.1f %9.1f %9.1f %12.3f %12.2f %12.2f\n", preset.name, label,
+                    psnr["noon"].get<double>(), psnr["sunset"].get<double>(), psnr["twilight"].get<double>(), psnr_min,
+                    lut_build, copy_ms > 0 ? sky / copy_ms : 0.0, copy_ms > 0 ? with_view / copy_ms : 0.0);
+        presets.push_back({
+            {"name", preset.name},
+            {"transmittance", {preset.t_w, preset.t_h, preset.t_steps}},
+            {"multiscatter", {preset.ms_size, preset.ms_steps}},
+            {"sky_view", {preset.v_w, preset.v_h, preset.v_steps}},
+            {"psnr_db", psnr},
+            {"psnr_db_min", psnr_min},
+            {"lut_build_ms", lut_build},
+            {"sky_view_ms", median(view_ms)},
+            {"sky_pass_ms", sky},
+            {"sky_copies", copy_ms > 0 ? sky / copy_ms : 0.0},
+            {"sky_with_view_copies", copy_ms > 0 ? with_view / copy_ms : 0.0},
+        });
+    }
+    nlohmann::json out = {
+        {"renderer", context->renderer()},
+        {"backend", backendName(o.backend)},
+        {"size", {o.width, o.height}},
+        {"psnr_size", {kRefW, kRefH}},
+        {"psnr_definition", "10 log10(1 / mean(((gpu - ref) / max(ref))^2)), linear radiance, RGB, sun disk masked"},
+        {"reference_copy_ms", copy_ms},
+        {"presets", presets},
+    };
+    std::printf("reference_copy_ms %.4f\n", copy_ms);
+    if (!o.json.empty()) {
+        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
+        if (!problem.empty()) {
+            std::fprintf(stderr, "vista: %s\n", problem.c_str());
+            return 1;
+        }
+    }
+    return 0;
+}
+
+}  // namespace vista

@@ -1,0 +1,254 @@
+// GPU atmosphere LUTs and the sky pass. The transmittance and multiple-scattering LUTs depend
+// only on the atmosphere, so they live here across frames and are rebuilt when its settings
+// change; the sky-view LUT also depends on the sun and the camera's altitude and is rebuilt
+// when either moves enough. A frame that rebuilds nothing adds only "sky.atmosphere".
+#include "sky/atmosphere.h"
+
+#include "renderer/bindings.h"
+#include "renderer/camera.h"
+#include "sky/shaders/sky_bindings.glsl"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vista {
+
+namespace {
+
+constexpr int kMsPolarNodes = 8;    // per polar range, as the reference's default
+constexpr int kMsAzimuthNodes = 6;  // over [0, pi]
+
+// Gauss-Legendre nodes and weights on [0, 1] (Newton on the Legendre recurrence).
+void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w) {
+    x.assign(std::size_t(n), 0.0);
+    w.assign(std::size_t(n), 0.0);
+    for (int i = 0; i < n; ++i) {
+        double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+        for (int it = 0; it < 100; ++it) {
+            double p0 = 1.0, p1 = 0.0;
+            for (int j = 1; j <= n; ++j) {
+                double p2 = p1;
+                p1 = p0;
+                p0 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p2) / j;
+            }
+            dp = n * (z * p0 - p1) / (z * z - 1.0);
+            double dz = p0 / dp;
+            z -= dz;
+            if (std::abs(dz) < 1e-15) break;
+        }
+        x[std::size_t(i)] = 0.5 * (1.0 - z);
+        w[std::size_t(i)] = 1.0 / ((1.0 - z * z) * dp * dp);
+    }
+}
+
+gl::Texture makeLut(int width, int height, GLenum format, const char* name) {
+    gl::Texture t = gl::Texture::create2D(width, height, format, 1, name);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+double cameraAltitudeM(const RenderContext& rc) { return std::max(rc.view.position.y, 0.0); }
+
+}  // namespace
+
+// std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
+struct SkyAtmosphere::Uniforms {
+    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun;
+    glm::ivec4 sizes, sizes2;
+    glm::vec4 gl[16];
+    glm::ivec4 gl_count;
+};
+
+glm::dvec3 sunDirection(const SkySettings& sky) {
+    if (sky.sun_mode == SunMode::Time) return sunPosition(sky.latitude_deg, sky.day_of_year, sky.time_of_day_h).direction;
+    return glm::normalize(directionFromAngles(sky.sun_azimuth_deg, sky.sun_elevation_deg));
+}
+
+AtmosphereParams atmosphereParams(const SkySettings& s) {
+    AtmosphereParams p;
+    p.bottom_radius = double(s.planet_radius_km) * 1e3;
+    p.top_radius = p.bottom_radius + double(s.atmosphere_height_km) * 1e3;
+    p.rayleigh_scattering = glm::dvec3(s.rayleigh_scattering) * 1e-6;
+    p.rayleigh_scale_height = double(s.rayleigh_scale_height_km) * 1e3;
+    p.mie_scattering = glm::dvec3(double(s.mie_scattering) * 1e-6);
+    p.mie_extinction = glm::dvec3((double(s.mie_scattering) + double(s.mie_absorption)) * 1e-6);
+    p.mie_scale_height = double(s.mie_scale_height_km) * 1e3;
+    p.mie_g = s.mie_g;
+    p.mie_phase = s.mie_phase == SkyMiePhase::HenyeyGreenstein ? MiePhase::HenyeyGreenstein : MiePhase::CornetteShanks;
+    p.ozone_absorption = glm::dvec3(s.ozone_absorption) * 1e-6;
+    p.ozone_center_altitude = double(s.ozone_center_km) * 1e3;
+    p.ozone_half_width = double(s.ozone_half_width_km) * 1e3;
+    p.ground_albedo = glm::dvec3(s.ground_albedo);
+    p.solar_irradiance = glm::dvec3(1.0);
+    p.sun_angular_radius = glm::radians(double(s.sun_angular_radius_deg));
+    return p;
+}
+
+std::vector<std::string> skyPrograms() {
+    return {"sky/shaders/transmittance_lut.glsl", "sky/shaders/multiscatter_lut.glsl", "sky/shaders/sky_view_lut.glsl",
+            "sky/shaders/sky.glsl"};
+}
+
+SkyAtmosphere::SkyAtmosphere()
+    : uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky atmosphere uniforms")) {}
+
+void SkyAtmosphere::invalidate() {
+    atmosphere_valid_ = false;
+    view_valid_ = false;
+}
+
+void SkyAtmosphere::upload(const Uniforms& u) {
+    static_assert(sizeof(Uniforms) == 448, "Uniforms must match the std140 block");
+    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
+}
+
+void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets) {
+    const AtmosphereParams p = atmosphereParams(sky);
+    const glm::dvec3 sun = sunDirection(sky);
+    const double altitude_m = cameraAltitudeM(rc);
+    const bool in_space = p.bottom_radius + altitude_m >= p.top_radius;
+
+    Uniforms u{};
+    const float km = 1e-3f, per_km = 1e3f;
+    u.radii = glm::vec4(float(p.bottom_radius) * km, float(p.top_radius) * km,
+                        float(p.bottom_radius * 1e-3 + altitude_m * 1e-3), float(altitude_m) * km);
+    u.rayleigh = glm::vec4(glm::vec3(p.rayleigh_scattering) * per_km, float(p.rayleigh_scale_height) * km);
+    u.mie = glm::vec4(glm::vec3(p.mie_scattering) * per_km, float(p.mie_scale_height) * km);
+    u.mie_ext = glm::vec4(glm::vec3(p.mie_extinction) * per_km, float(p.mie_g));
+    u.ozone = glm::vec4(glm::vec3(p.ozone_absorption) * per_km, float(p.ozone_center_altitude) * km);
+    u.misc = glm::vec4(float(p.ozone_half_width) * km, p.mie_phase == MiePhase::HenyeyGreenstein ? 1.0f : 0.0f,
+                       float(p.sun_angular_radius), sky.sun_limb_darkening);
+    u.albedo = glm::vec4(glm::vec3(p.ground_albedo), 0.0f);
+    u.solar = glm::vec4(glm::vec3(p.solar_irradiance) * sky.sun_illuminance, sky.sun_illuminance);
+    u.sun = glm::vec4(glm::vec3(sun), 0.0f);
+    u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
+    u.sizes2 = {sky.sky_view_height, sky.transmittance_steps, sky.multiscatter_steps, sky.sky_view_steps};
+    std::vector<double> gx, gw;
+    gaussLegendre01(kMsPolarNodes, gx, gw);
+    for (int i = 0; i < kMsPolarNodes; ++i) u.gl[i] = glm::vec4(float(gx[std::size_t(i)]), float(gw[std::size_t(i)]), 0, 0);
+    u.gl_count = {kMsPolarNodes, kMsAzimuthNodes, 0, 0};
+
+    // What each LUT depends on; a change rebuilds it (and those that read it).
+    std::vector<float> atmosphere_key(reinterpret_cast<const float*>(&u.radii), reinterpret_cast<const float*>(&u.radii) + 2);
+    for (const glm::vec4* v : {&u.rayleigh, &u.mie, &u.mie_ext, &u.ozone, &u.albedo})
+        atmosphere_key.insert(atmosphere_key.end(), {v->x, v->y, v->z, v->w});
+    atmosphere_key.insert(atmosphere_key.end(), {u.misc.x, u.misc.y});
+    for (int v : {u.sizes.x, u.sizes.y, u.sizes.z, u.sizes2.y, u.sizes2.z}) atmosphere_key.push_back(float(v));
+    std::vector<float> view_key = {float(u.sizes.w), float(u.sizes2.x), float(u.sizes2.w)};
+
+    bool rebuild_atmosphere = !atmosphere_valid_ || atmosphere_key != atmosphere_key_;
+    if (rebuild_atmosphere) {
+        if (!transmittance_ || transmittance_.width() != sky.transmittance_width ||
+            transmittance_.height() != sky.transmittance_height)
+            transmittance_ = makeLut(sky.transmittance_width, sky.transmittance_height, GL_RGBA32F, "sky transmittance LUT");
+        if (!multiscatter_ || multiscatter_.width() != sky.multiscatter_size)
+            multiscatter_ = makeLut(sky.multiscatter_size, sky.multiscatter_size, GL_RGBA32F, "sky multiscatter LUT");
+        atmosphere_key_ = atmosphere_key;
+        atmosphere_valid_ = false;
+        view_valid_ = false;
+    }
+    if (!sky_view_ || sky_view_.width() != sky.sky_view_width || sky_view_.height() != sky.sky_view_height) {
+        sky_view_ = makeLut(sky.sky_view_width, sky.sky_view_height, GL_RGBA16F, "sky view LUT");
+        view_valid_ = false;
+    }
+    const double sun_cos = glm::dot(sun, view_sun_);
+    const double altitude_tolerance = std::max(1.0, 1e-3 * altitude_m);
+    bool rebuild_view = !in_space && (!view_valid_ || view_key != view_key_ ||
+                                      sun_cos < std::cos(glm::radians(double(sky.rebuild_sun_deg))) ||
+                                      std::abs(altitude_m - view_altitude_m_) > altitude_tolerance);
+
+    TextureHandle transmittance = graph.importTexture(
+        "sky.transmittance_lut", {sky.transmittance_width, sky.transmittance_height, PixelFormat::RGBA32F}, transmittance_.id());
+    TextureHandle multiscatter = graph.importTexture(
+        "sky.multiscatter_lut", {sky.multiscatter_size, sky.multiscatter_size, PixelFormat::RGBA32F}, multiscatter_.id());
+    TextureHandle sky_view = graph.importTexture(
+        "sky.view_lut", {sky.sky_view_width, sky.sky_view_height, PixelFormat::RGBA16F}, sky_view_.id());
+
+    struct LutData {
+        TextureHandle out, in0, in1;
+    };
+    // One compute pass writing `out` from the LUTs it reads.
+    auto lutPass = [&](const char* name, const char* program, TextureHandle out, TextureHandle in0, TextureHandle in1,
+                       auto on_done) {
+        const LutData& d = graph.addPass<LutData>(name,
+            [&](PassBuilder& b, LutData& data) {
+                if (in0.valid()) data.in0 = b.read(in0);
+                if (in1.valid()) data.in1 = b.read(in1);
+                data.out = b.write(out);
+            },
+            [this, &rc, u, program, on_done](const LutData& data, PassContext& ctx) {
+                upload(u);
+                glUseProgram(rc.shaders.get(program)->id());
+                if (data.in0.valid()) glBindTextureUnit(binding::kTex0, ctx.texture(data.in0));
+                if (data.in1.valid()) glBindTextureUnit(binding::kTex1, ctx.texture(data.in1));
+                const TextureDesc& desc = ctx.desc(data.out);
+                glBindImageTexture(binding::kImageOutput, ctx.texture(data.out), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                                   glInternalFormat(desc.format));
+                glDispatchCompute(GLuint((desc.width + 7) / 8), GLuint((desc.height + 7) / 8), 1);
+                glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+                on_done();
+            });
+        return d.out;
+    };
+    if (rebuild_atmosphere || !atmosphere_valid_) {
+        transmittance = lutPass("sky.transmittance", "sky/shaders/transmittance_lut.glsl", transmittance, {}, {},
+                                [this] { ++stats_.transmittance_builds; });
+        multiscatter = lutPass("sky.multiscatter", "sky/shaders/multiscatter_lut.glsl", multiscatter, transmittance, {},
+                               [this] {
+                                   ++stats_.multiscatter_builds;
+                                   atmosphere_valid_ = true;
+                               });
+    }
+    if (rebuild_view) {
+        sky_view = lutPass("sky.view", "sky/shaders/sky_view_lut.glsl", sky_view, transmittance, multiscatter,
+                           [this, sun, altitude_m, view_key] {
+                               ++stats_.sky_view_builds;
+                               view_valid_ = true;
+                               view_sun_ = sun;
+                               view_altitude_m_ = altitude_m;
+                               view_key_ = view_key;
+                           });
+    }
+
+    struct Data {
+        TextureHandle hdr, depth, transmittance, multiscatter, sky_view;
+    };
+    const Data& d = graph.addPass<Data>("sky.atmosphere",
+        [&](PassBuilder& b, Data& data) {
+            if (targets.depth.valid()) data.depth = b.read(targets.depth);
+            data.transmittance = b.read(transmittance);
+            data.multiscatter = b.read(multiscatter);
+            data.sky_view = b.read(sky_view);
+            data.hdr = b.write(targets.hdr);
+        },
+        [this, &rc, u](const Data& data, PassContext& ctx) {
+            upload(u);
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            GLuint depth = data.depth.valid() ? ctx.texture(data.depth) : 0;
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, depth), desc.width, desc.height);
+            glUseProgram(rc.shaders.get("sky/shaders/sky.glsl")->id());
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
+            glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
+            glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));
+            if (depth != 0) {
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_GEQUAL);  // the triangle is at depth 0: passes only where depth is 0
+                glDepthMask(GL_FALSE);
+            }
+            drawFullscreen(rc);
+            glDisable(GL_DEPTH_TEST);
+            glDepthMask(GL_TRUE);
+        });
+    targets.hdr = d.hdr;
+}
+
+}  // namespace vista

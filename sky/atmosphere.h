@@ -1,0 +1,65 @@
+// The GPU atmosphere (Hillaire 2020, the model of sky/atmosphere_model.h): long-lived LUTs
+// (transmittance, multiple scattering, sky view) rebuilt only when what they depend on
+// changes, and the "sky.atmosphere" pass that draws the sky, the sun disk and the planet's
+// ground behind everything at infinite depth. Also the sun's direction from the settings.
+#pragma once
+
+#include "config/settings.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
+#include "sky/atmosphere_model.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+// Unit vector towards the sun in vista's world (y up, -z north): from the angles or from
+// latitude, day of year and solar time (sun_mode).
+glm::dvec3 sunDirection(const SkySettings& sky);
+
+// The model's parameters from the settings (metres, 1/m; solar_irradiance 1: radiances are
+// transfer factors the renderer scales by sun_illuminance).
+AtmosphereParams atmosphereParams(const SkySettings& sky);
+
+// Every program the sky uses (for FrameRenderer::allPrograms()).
+std::vector<std::string> skyPrograms();
+
+// What the sky LUTs were last built for, and how often (tests and the bench look).
+struct SkyLutStats {
+    int transmittance_builds = 0, multiscatter_builds = 0, sky_view_builds = 0;
+};
+
+// Owns the LUT textures across frames. Create once (needs a GL context); cheap until used.
+class SkyAtmosphere {
+public:
+    SkyAtmosphere();
+    // Adds the passes this frame needs: the LUT passes whose inputs changed, then
+    // "sky.atmosphere" over targets.hdr where targets.depth (if valid) is still at infinity.
+    void addPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
+    // Forces every LUT to be rebuilt next frame (benchmarks).
+    void invalidate();
+    const SkyLutStats& stats() const { return stats_; }
+    GLuint transmittanceTexture() const { return transmittance_.id(); }
+    GLuint multiscatterTexture() const { return multiscatter_.id(); }
+    GLuint skyViewTexture() const { return sky_view_.id(); }
+
+private:
+    struct Uniforms;
+    void upload(const Uniforms& u);
+
+    gl::Buffer uniforms_;
+    gl::Texture transmittance_, multiscatter_, sky_view_;
+    std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for
+    std::vector<float> view_key_;        // size and steps of the sky-view LUT
+    glm::dvec3 view_sun_{0.0};           // sun and altitude the sky-view LUT was built for
+    double view_altitude_m_ = -1.0;
+    bool atmosphere_valid_ = false, view_valid_ = false;
+    SkyLutStats stats_;
+};
+
+}  // namespace vista

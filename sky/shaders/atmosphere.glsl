@@ -1,0 +1,229 @@
+// The atmosphere model on the GPU (the same model as sky/atmosphere_reference.cpp): the
+// parameter block, densities, phase functions, planet-frame ray geometry, the LUT
+// parameterisations (Bruneton 2017 for transmittance, Hillaire 2020 for the sky view) and the
+// ray integrator shared by the LUT passes and the from-space sky. Lengths in km, coefficients
+// in 1/km. Planet frame: centre at the origin, the camera at (0, r_cam, 0) (the world is flat
+// under a curved atmosphere: the planet's centre is straight below the camera).
+#include "sky_bindings.glsl"
+
+layout(std140, binding = SKY_BINDING_ATMOSPHERE) uniform AtmosphereUniforms {
+    vec4 a_radii;          // x bottom R, y top Rt, z camera radius, w camera altitude
+    vec4 a_rayleigh;       // xyz scattering, w scale height
+    vec4 a_mie;            // xyz scattering, w scale height
+    vec4 a_mie_ext;        // xyz extinction, w g
+    vec4 a_ozone;          // xyz absorption, w centre altitude
+    vec4 a_misc;           // x ozone half width, y mie phase (0 CS, 1 HG), z sun angular radius, w limb u
+    vec4 a_albedo;         // xyz ground albedo
+    vec4 a_solar;          // xyz solar irradiance * sun illuminance (HDR), w sun illuminance
+    vec4 a_sun;            // xyz unit vector towards the sun (world = planet frame at the camera)
+    ivec4 a_sizes;         // transmittance w, h, multiscatter size, sky-view w
+    ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps
+    vec4 a_gl[16];         // x Gauss-Legendre node on [0, 1], y weight (multiple-scattering sphere)
+    ivec4 a_gl_count;      // x polar nodes, y azimuth nodes
+};
+
+const float PI = 3.14159265358979;
+
+float bottomR() { return a_radii.x; }
+float topR() { return a_radii.y; }
+
+struct Medium {
+    vec3 rayleigh, mie, extinction;
+};
+
+Medium medium(float r) {
+    float h = max(r - bottomR(), 0.0);
+    float dr = exp(-h / a_rayleigh.w), dm = exp(-h / a_mie.w);
+    float oz = a_misc.x > 0.0 ? max(0.0, 1.0 - abs(h - a_ozone.w) / a_misc.x) : 0.0;
+    Medium m;
+    m.rayleigh = a_rayleigh.xyz * dr;
+    m.mie = a_mie.xyz * dm;
+    m.extinction = m.rayleigh + a_mie_ext.xyz * dm + a_ozone.xyz * oz;
+    return m;
+}
+
+float rayleighPhase(float c) { return 3.0 / (16.0 * PI) * (1.0 + c * c); }
+
+float miePhase(float c) {
+    float g = a_mie_ext.w;
+    float denom = max(1.0 + g * g - 2.0 * g * c, 1e-6);
+    if (a_misc.y > 0.5) return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));
+    float k = 3.0 / (8.0 * PI) * (1.0 - g * g) / (2.0 + g * g);
+    return k * (1.0 + c * c) / (denom * sqrt(denom));
+}
+
+float safeSqrt(float x) { return sqrt(max(x, 0.0)); }
+
+bool intersectsGround(float r, float mu) {
+    float R = bottomR();
+    return mu < 0.0 && (R - r) * (R + r) + (r * mu) * (r * mu) >= 0.0;
+}
+
+float distanceToGround(float r, float mu) {
+    float R = bottomR();
+    float far_b = -r * mu + safeSqrt((R - r) * (R + r) + (r * mu) * (r * mu));
+    return far_b > 0.0 ? max((r - R) * (r + R) / far_b, 0.0) : 0.0;
+}
+
+float distanceToTop(float r, float mu) {
+    float Rt = topR();
+    return max(-r * mu + safeSqrt((Rt - r) * (Rt + r) + (r * mu) * (r * mu)), 0.0);
+}
+
+float horizonMu(float r) {
+    float R = bottomR(), rr = max(r, R);
+    return -safeSqrt((rr - R) * (rr + R)) / rr;
+}
+
+// Texel centres hold the ends of the unit range (Bruneton's GetTextureCoordFromUnitRange).
+float unitToUv(float x, float n) { return 0.5 / n + x * (1.0 - 1.0 / n); }
+float uvToUnit(float u, float n) { return (u - 0.5 / n) / (1.0 - 1.0 / n); }
+
+// Transmittance LUT (Bruneton 2017): x_r = rho / H, x_mu = (d - d_min) / (d_max - d_min); covers
+// the rays that miss the ground (mu >= horizon), dense near the horizon.
+vec2 transmittanceUv(float r, float mu) {
+    float R = bottomR(), Rt = topR();
+    float H = sqrt((Rt - R) * (Rt + R));
+    float rho = safeSqrt((r - R) * (r + R));
+    float d = distanceToTop(r, mu);
+    float d_min = Rt - r, d_max = rho + H;
+    float x_mu = d_max > d_min ? (d - d_min) / (d_max - d_min) : 0.0;
+    return vec2(unitToUv(clamp(x_mu, 0.0, 1.0), float(a_sizes.x)), unitToUv(clamp(rho / H, 0.0, 1.0), float(a_sizes.y)));
+}
+
+void transmittanceRMu(vec2 uv, out float r, out float mu) {
+    float R = bottomR(), Rt = topR();
+    float x_mu = uvToUnit(uv.x, float(a_sizes.x)), x_r = uvToUnit(uv.y, float(a_sizes.y));
+    float H = sqrt((Rt - R) * (Rt + R));
+    float rho = H * x_r;
+    r = sqrt(rho * rho + R * R);
+    float d_min = Rt - r, d_max = rho + H;
+    float d = d_min + x_mu * (d_max - d_min);
+    mu = d == 0.0 ? 1.0 : clamp((H * H - rho * rho - d * d) / (2.0 * r * d), -1.0, 1.0);
+}
+
+#ifdef SKY_TRANSMITTANCE_LUT
+layout(binding = SKY_TEX_TRANSMITTANCE) uniform sampler2D u_transmittance;
+// Transmittance to the top of the atmosphere from (r, mu), the ray held at the horizon when it
+// would hit the ground (the lit-side limit: multiply by sunVisible for the planet's shadow).
+vec3 transmittanceToTop(float r, float mu) {
+    r = clamp(r, bottomR(), topR());
+    return texture(u_transmittance, transmittanceUv(r, max(mu, horizonMu(r)))).rgb;
+}
+float sunVisible(float r, float mu_s) { return intersectsGround(r, mu_s) ? 0.0 : 1.0; }
+#endif
+
+#ifdef SKY_MULTISCATTER_LUT
+layout(binding = SKY_TEX_MULTISCATTER) uniform sampler2D u_multiscatter;
+// psi_ms (1/sr per unit solar irradiance); the LUT stores its logarithm over (sqrt altitude, mu_s).
+vec2 multiscatterUv(float r, float mu_s) {
+    float x = sqrt(clamp((r - bottomR()) / (topR() - bottomR()), 0.0, 1.0));
+    float n = float(a_sizes.z);
+    return vec2(unitToUv(clamp(mu_s * 0.5 + 0.5, 0.0, 1.0), n), unitToUv(x, n));
+}
+vec3 multiscatter(float r, float mu_s) { return exp(texture(u_multiscatter, multiscatterUv(r, mu_s)).rgb); }
+#endif
+
+// What a ray accumulates: radiance from the source and the transmittance to its end.
+struct RaySums {
+    vec3 radiance;   // int T(0, t) J(t) dt
+    vec3 second;     // int T(0, t) sigma_s(t) dt (multiple-scattering pass only)
+    vec3 transmittance;
+};
+
+#if defined(SKY_TRANSMITTANCE_LUT)
+// Integrates along the ray (r, mu) with the sun at mu_s, nu over [0, len]. mode 0: single +
+// multiple scattering (sky view, from space); mode 1: the multiple-scattering LUT's
+// integrands (isotropic single scattering, and sigma_s for f_ms). The ray is split at its
+// perigee and each piece is sampled at t = len u^2 from its lower-altitude end, so samples
+// gather where the air is dense; each interval is integrated exactly for a constant medium
+// (Hillaire 2020: (S - S T) / sigma_t).
+RaySums integrateRay(float r, float mu, float mu_s, float nu, float len, int steps, int mode) {
+    RaySums s;
+    s.radiance = vec3(0.0);
+    s.second = vec3(0.0);
+    s.transmittance = vec3(1.0);
+    if (!(len > 0.0)) return s;
+    float phase_r = rayleighPhase(nu), phase_m = miePhase(nu);
+    float t_p = -r * mu;
+    bool split = t_p > 0.0 && t_p < len;
+    int pieces = split ? 2 : 1;
+    int n = max(steps / pieces, 2);
+    for (int piece = 0; piece < pieces; ++piece) {
+        // piece 0 of a split ray: [0, t_p], dense at t_p; else [a, b] dense at a (going up) or
+        // at b (a ray ending on the ground, whose end is lowest).
+        float a = piece == 0 ? 0.0 : t_p, b = (split && piece == 0) ? t_p : len;
+        bool dense_at_a = split ? piece == 1 : !(mu < 0.0);
+        float piece_len = b - a;
+        float t_prev = a;
+        for (int i = 1; i <= n; ++i) {
+            float u = float(i) / float(n);
+            float t = dense_at_a ? a + piece_len * u * u : b - piece_len * (1.0 - u) * (1.0 - u);
+            float um = (float(i) - 0.5) / float(n);
+            float tm = dense_at_a ? a + piece_len * um * um : b - piece_len * (1.0 - um) * (1.0 - um);
+            float dt = t - t_prev;
+            t_prev = t;
+            float r_t = sqrt(max(r * r + tm * (2.0 * r * mu + tm), 0.0));
+            float mu_s_t = clamp((r * mu_s + tm * nu) / r_t, -1.0, 1.0);
+            Medium m = medium(r_t);
+            vec3 sun = transmittanceToTop(r_t, mu_s_t) * sunVisible(r_t, mu_s_t);
+            vec3 scattering = m.rayleigh + m.mie;
+            vec3 j;
+            if (mode == 0) {
+                j = (m.rayleigh * phase_r + m.mie * phase_m) * sun;
+#ifdef SKY_MULTISCATTER_LUT
+                j += scattering * multiscatter(r_t, mu_s_t);
+#endif
+            } else {
+                j = scattering * sun * (1.0 / (4.0 * PI));
+            }
+            vec3 ext = max(m.extinction, vec3(1e-12));
+            vec3 step_t = exp(-ext * dt);
+            vec3 weight = s.transmittance * (vec3(1.0) - step_t) / ext;  // int over the interval of T
+            s.radiance += weight * j;
+            s.second += weight * scattering;
+            s.transmittance *= step_t;
+        }
+    }
+    return s;
+}
+#endif
+
+// Sky-view LUT (Hillaire 2020 with its non-linear latitude): v in [0, 0.5) above the horizon,
+// [0.5, 1] below (towards the ground), each with a square-root mapping that puts texels at the
+// horizon; u = sqrt((1 - cos(azimuth from the sun)) / 2), dense towards the sun.
+vec2 skyViewUv(float r, float mu, float cos_azimuth) {
+    float R = bottomR();
+    float v_horizon = safeSqrt((r - R) * (r + R));
+    float beta = acos(clamp(v_horizon / r, -1.0, 1.0));  // angle of the horizon below horizontal
+    float zenith_horizon = PI - beta;
+    float zenith = acos(clamp(mu, -1.0, 1.0));
+    float v;
+    if (!intersectsGround(r, mu)) {
+        float c = clamp(zenith / zenith_horizon, 0.0, 1.0);
+        v = (1.0 - sqrt(1.0 - c)) * 0.5;
+    } else {
+        float c = clamp((zenith - zenith_horizon) / max(beta, 1e-6), 0.0, 1.0);
+        v = sqrt(c) * 0.5 + 0.5;
+    }
+    float u = sqrt(clamp(0.5 - 0.5 * cos_azimuth, 0.0, 1.0));
+    return vec2(unitToUv(u, float(a_sizes.w)), unitToUv(v, float(a_sizes2.x)));
+}
+
+void skyViewParams(vec2 uv, float r, out float mu, out float cos_azimuth) {
+    float R = bottomR();
+    float u = uvToUnit(uv.x, float(a_sizes.w)), v = uvToUnit(uv.y, float(a_sizes2.x));
+    float v_horizon = safeSqrt((r - R) * (r + R));
+    float beta = acos(clamp(v_horizon / r, -1.0, 1.0));
+    float zenith_horizon = PI - beta;
+    if (v < 0.5) {
+        float c = 1.0 - 2.0 * v;
+        c = 1.0 - c * c;
+        // Stay a hair above the horizon: the last texel row is the grazing sky ray.
+        mu = cos(min(zenith_horizon * c, zenith_horizon - 1e-5));
+    } else {
+        float c = 2.0 * v - 1.0;
+        mu = cos(zenith_horizon + max(beta * c * c, 1e-5));
+    }
+    cos_azimuth = 1.0 - 2.0 * u * u;
+}

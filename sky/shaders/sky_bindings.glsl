@@ -1,0 +1,3 @@
+// Binding points of the sky's own GL resources, shared by C++ (sky/atmosphere.cpp includes
+// this file) and GLSL. Only #defines and // comments.
+#define SKY_BINDING_ATMOSPHERE 1
