@@ -8,6 +8,7 @@
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
 #include "app/scene.h"
+#include "lighting/deferred.h"
 #include "sky/atmosphere.h"
 
 #include <glm/trigonometric.hpp>
@@ -24,6 +25,7 @@ std::vector<ProgramKey> allPrograms() {
         {"renderer/shaders/nonfinite.glsl", {}},
     };
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
+    for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
     for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
@@ -106,20 +108,30 @@ void readTexture(GLuint texture, int width, int height, GLenum type, std::vector
 }
 
 // "frame.clear": creates the scene targets and clears them once; scene passes draw over them.
-SceneTargets addClearPass(FrameGraph& graph, const RenderContext& rc) {
+// The G-buffer (albedo, normal) only when something opaque will be lit.
+SceneTargets addClearPass(FrameGraph& graph, const RenderContext& rc, bool gbuffer) {
     struct Data {
         SceneTargets t;
     };
     return graph.addPass<Data>("frame.clear",
         [&](PassBuilder& b, Data& d) {
-            d.t.hdr = b.write(b.create("scene.hdr", {rc.view.width, rc.view.height, PixelFormat::RGBA16F}));
-            d.t.depth = b.write(b.create("scene.depth", {rc.view.width, rc.view.height, PixelFormat::Depth32F}));
+            const int w = rc.view.width, h = rc.view.height;
+            d.t.hdr = b.write(b.create("scene.hdr", {w, h, PixelFormat::RGBA16F}));
+            d.t.depth = b.write(b.create("scene.depth", {w, h, PixelFormat::Depth32F}));
+            if (gbuffer) {
+                d.t.albedo = b.write(b.create("gbuffer.albedo", {w, h, PixelFormat::RGBA8}));
+                d.t.normal = b.write(b.create("gbuffer.normal", {w, h, PixelFormat::RGB10A2}));
+            }
         },
         [&rc](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.t.hdr);
-            bindTarget(rc.device.framebuffer({ctx.texture(d.t.hdr)}, ctx.texture(d.t.depth)), desc.width, desc.height);
-            glClearColor(0, 0, 0, 0);
-            glClearDepth(0.0);  // reversed-Z: 0 is infinitely far
+            GLuint fb = d.t.albedo.valid()
+                ? rc.device.framebuffer({ctx.texture(d.t.hdr), ctx.texture(d.t.albedo), ctx.texture(d.t.normal)},
+                                        ctx.texture(d.t.depth))
+                : rc.device.framebuffer({ctx.texture(d.t.hdr)}, ctx.texture(d.t.depth));
+            bindTarget(fb, desc.width, desc.height);
+            glClearColor(0, 0, 0, 0);  // G-buffer: normal.a = 0 is "unlit"
+            glClearDepth(0.0);         // reversed-Z: 0 is infinitely far
             glDepthMask(GL_TRUE);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         }).t;
@@ -166,15 +178,20 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     RenderContext rc = context(view, s, time_s);
     FrameGraph graph;
 
-    SceneTargets scene = addClearPass(graph, rc);
+    const bool terrain = s.terrain.enabled && terrain_;
+    SceneTargets scene = addClearPass(graph, rc, terrain);
     FrameReport report;
-    if (s.terrain.enabled && terrain_) {
+    if (terrain) {
         addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
         report.counters["terrain.nodes"] = double(c.nodes);
         report.counters["terrain.draws"] = double(c.draws);
         report.counters["terrain.select_ms"] = c.select_ms;
+    }
+    if (scene.albedo.valid()) {
+        const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
+        addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene);
     }
     if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
     if (s.sky.enabled) {

@@ -11,6 +11,7 @@
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
 #include "sky/atmosphere.h"
+#include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
 
 #include <cstdint>
@@ -83,6 +84,7 @@ private:
     std::uint64_t frame_ = 0;
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
+    SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame
 };

@@ -279,12 +279,17 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
                    screenErrorScale(rc.view.fov_deg, rc.view.height));
     const Data& d = graph.addPass<Data>("terrain.gbuffer",
         [&](PassBuilder& b, Data& data) {
+            data.t = targets;
             data.t.hdr = b.write(targets.hdr);
+            data.t.albedo = b.write(targets.albedo);
+            data.t.normal = b.write(targets.normal);
             data.t.depth = b.write(targets.depth);
         },
         [&rc, &terrain, &s](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.t.hdr);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.t.hdr)}, ctx.texture(data.t.depth)), desc.width, desc.height);
+            GLuint fb = rc.device.framebuffer(
+                {ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)}, ctx.texture(data.t.depth));
+            bindTarget(fb, desc.width, desc.height);
             GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl")->id();
             glUseProgram(program);
             glEnable(GL_DEPTH_TEST);

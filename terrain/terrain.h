@@ -103,7 +103,7 @@ private:
     std::size_t max_instances_ = 0;
 };
 
-// "terrain.gbuffer": the selected nodes into the scene targets (interim: forward-shaded HDR);
+// "terrain.gbuffer": the selected nodes into the G-buffer (targets.albedo, .normal, .depth; needs them);
 // with [terrain] bounds, "terrain.bounds" draws their boxes over it.
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
                     SceneTargets& targets);

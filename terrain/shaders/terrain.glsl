@@ -1,9 +1,10 @@
 // CDLOD terrain: a half-node grid mesh drawn once per selected quadrant (instanced), heights
 // from the height texture, each vertex morphing toward the next coarser grid; per-pixel
 // normals from the normal map, height/slope material splatting with detail normals.
-// Interim shading: forward sun + sky ambient into the HDR target (the lighting issue moves
-// this to the G-buffer).
+// Writes the G-buffer (renderer/scene_targets.h); lighting.* light it. The debug views
+// (LOD, morph, normals, screen error) write their colour as unlit emissive radiance.
 #include "../../renderer/shaders/common.glsl"
+#include "../../renderer/shaders/gbuffer.glsl"
 #include "tiles.glsl"
 
 struct Instance {
@@ -118,7 +119,9 @@ in float v_sample;
 in vec2 v_grid;
 flat in vec2 v_lod;
 in float v_morph;
-layout(location = 0) out vec4 o_color;
+layout(location = 0) out vec4 o_color;   // emissive radiance (0 when lit); error view: alpha = px
+layout(location = 1) out vec4 o_albedo;  // G-buffer albedo, roughness
+layout(location = 2) out vec4 o_normal;  // G-buffer normal, F0, lit flag
 
 const int SAND = 0, GRASS = 1, ROCK = 2, SNOW = 3, DIRT = 4;
 
@@ -134,9 +137,20 @@ void layerSample(int layer, vec2 uv, out vec4 albedo, out vec3 detail) {
     detail = texture(u_detail, vec3(uv, float(layer))).xyz * 2.0 - 1.0;
 }
 
+// Darkens the grid mesh's edges (terrain wireframe): 0 away from an edge, up to 0.8 on it.
+float wireframe() {
+    if (u_wireframe == 0) return 0.0;
+    vec2 g = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
+    return (1.0 - min(min(g.x, g.y), 1.0)) * 0.8;
+}
+
 void main() {
     vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
     float dist = length(v_rel);
+    float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
+    // Debug views are unlit: their colour goes to the HDR target, the G-buffer says "unlit".
+    o_albedo = vec4(0.0);
+    o_normal = vec4(encodeNormal(n), 0.0, 0.0);
     if (u_terrain_view == 4) {
         // Vertical screen error: the drawn point and the full-resolution surface below or
         // above it, both projected; alpha holds the error in pixels (vista bench terrain reads it).
@@ -202,22 +216,16 @@ void main() {
         vec3 nd = safeNormalize(tangent * detail.x + bitangent * detail.y + n * max(detail.z, 0.05));
         vec3 shading_n = safeNormalize(mix(n, nd, fade));
 
-        vec3 l = u_sun_dir.xyz;
-        vec3 v = -v_rel / max(dist, 1e-6);
-        vec3 hv = safeNormalize(l + v);
-        float ndl = max(dot(shading_n, l), 0.0);
-        float rough = clamp(albedo.a, 0.05, 1.0);
-        float spec_power = 2.0 / (rough * rough * rough * rough) - 2.0;
-        float spec = pow(max(dot(shading_n, hv), 0.0), max(spec_power, 1.0)) * (spec_power + 8.0) / 25.13 * 0.04;
-        vec3 sky = mix(vec3(0.10, 0.09, 0.08), vec3(0.30, 0.38, 0.50), shading_n.y * 0.5 + 0.5);
-        vec3 sun = vec3(1.0, 0.96, 0.9) * u_sun_dir.w * ndl * step(0.0, u_sun_dir.y + 0.05);
-        vec3 color = albedo.rgb * (sun + sky * max(u_sun_dir.w, 0.05) * 0.35) + sun * spec;
-        o_color = vec4(color, 1.0);
+        Surface surface;
+        surface.albedo = albedo.rgb * (1.0 - wire);
+        surface.roughness = clamp(albedo.a, 0.05, 1.0);
+        surface.normal = shading_n;
+        surface.f0 = 0.04;  // dielectric: soil, rock, snow
+        surface.lit = true;
+        encodeSurface(surface, o_albedo, o_normal);
+        o_color = vec4(0.0, 0.0, 0.0, 1.0);  // terrain emits nothing
+        return;
     }
-    if (u_wireframe != 0) {
-        vec2 g = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
-        float line = 1.0 - min(min(g.x, g.y), 1.0);
-        o_color.rgb = mix(o_color.rgb, vec3(0.0), line * 0.8);
-    }
+    o_color.rgb *= 1.0 - wire;
 }
 #endif

@@ -1,0 +1,55 @@
+// Deferred sun and ambient light.
+#include "lighting/deferred.h"
+
+#include "renderer/bindings.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vista {
+
+SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings) {
+    SunAndSky out;
+    out.sun_irradiance = glm::vec3(sky.sun_illuminance);
+    out.sky_up = glm::vec3(sky.sky_irradiance_up);
+    const float sun_up = float(std::max(sky.sun_direction.y, 0.0));
+    out.ground_up = settings.ground_albedo * (out.sun_irradiance * sun_up + out.sky_up);
+    return out;
+}
+
+std::vector<std::string> lightingPrograms() {
+    return {"lighting/shaders/sun.glsl"};
+}
+
+void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets) {
+    struct Data {
+        TextureHandle depth, albedo, normal, hdr;
+    };
+    const Data& d = graph.addPass<Data>("lighting.sun",
+        [&](PassBuilder& b, Data& data) {
+            data.depth = b.read(targets.depth);
+            data.albedo = b.read(targets.albedo);
+            data.normal = b.read(targets.normal);
+            data.hdr = b.write(targets.hdr);
+        },
+        [&rc, light](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
+            glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl")->id());
+            glUniform3fv(0, 1, &light.sun_irradiance.x);
+            glUniform3fv(1, 1, &light.sky_up.x);
+            glUniform3fv(2, 1, &light.ground_up.x);
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            glBindTextureUnit(binding::kTex1, ctx.texture(data.albedo));
+            glBindTextureUnit(binding::kTex2, ctx.texture(data.normal));
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+            drawFullscreen(rc);
+            glDisable(GL_BLEND);
+        });
+    targets.hdr = d.hdr;
+}
+
+}  // namespace vista

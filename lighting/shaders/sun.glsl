@@ -1,0 +1,39 @@
+// "lighting.sun": the sun and the sky's ambient light on every lit G-buffer pixel, added to
+// the HDR target (which already holds emissive radiance). BRDF in brdf.glsl.
+#include "../../renderer/shaders/fullscreen.glsl"
+
+#ifdef FRAGMENT_SHADER
+#include "../../renderer/shaders/common.glsl"
+#include "../../renderer/shaders/gbuffer.glsl"
+#include "brdf.glsl"
+layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
+layout(binding = BINDING_TEX_1) uniform sampler2D u_albedo;
+layout(binding = BINDING_TEX_2) uniform sampler2D u_normal;
+layout(location = 0) uniform vec3 u_sun_irradiance;  // RGB irradiance of the sun at normal incidence
+layout(location = 1) uniform vec3 u_sky_up;          // RGB sky irradiance on an upward-facing surface
+layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from below (ground bounce) on a downward-facing surface
+layout(location = 0) out vec4 o_color;
+
+// Hemisphere ambient: irradiance on a surface facing n.
+vec3 ambientIrradiance(vec3 n) {
+    return mix(u_ground_up, u_sky_up, n.y * 0.5 + 0.5);
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(u_depth, p, 0).r;
+    Surface s = decodeSurface(texelFetch(u_albedo, p, 0), texelFetch(u_normal, p, 0));
+    if (depth <= 0.0 || !s.lit) discard;
+    vec3 pos = positionFromDepth((vec2(p) + 0.5) * u_viewport.zw, depth);
+    vec3 v = safeNormalize(-pos);
+    vec3 l = u_sun_dir.xyz;
+    vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * max(dot(s.normal, l), 0.0);
+    // Ambient: Lambert on the hemisphere irradiance, and a rough specular term from the
+    // irradiance around the mirror direction (Fresnel at the view angle, damped by roughness).
+    float nv = max(dot(s.normal, v), 0.0);
+    float fr = s.f0 + (1.0 - s.f0) * pow(1.0 - nv, 5.0) * (1.0 - s.roughness);
+    vec3 r = reflect(-v, s.normal);
+    color += (1.0 - fr) * s.albedo / PI * ambientIrradiance(s.normal) + fr / PI * ambientIrradiance(r);
+    o_color = vec4(color, 0.0);
+}
+#endif
