@@ -99,6 +99,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     else
         request.capture_ldr = &ldr;
     request.count_nonfinite = want_stats;
+    request.count_lights = want_stats;
 
     Progress progress(c.frames, job.write_images ? "capture" : "bench");
     int total = job.warmup_frames + c.frames;

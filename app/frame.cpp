@@ -9,6 +9,7 @@
 #include "renderer/reference_copy.h"
 #include "app/scene.h"
 #include "lighting/deferred.h"
+#include "lighting/local_lights.h"
 #include "sky/atmosphere.h"
 
 #include <glm/trigonometric.hpp>
@@ -26,6 +27,12 @@ std::vector<ProgramKey> allPrograms() {
     };
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
+    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
+        programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
+        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
+    }
+    for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"})
+        programs.push_back({"lighting/shaders/light_cull.glsl", {method}});
     for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
@@ -174,6 +181,24 @@ void addPresentPass(FrameGraph& graph, const RenderContext& rc, TextureHandle di
 
 }  // namespace
 
+void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                        const FrameRequest& request, SceneTargets& scene, FrameReport& report) {
+    if (sceneLightCount(s.lights) == 0) {
+        local_lights_.reset();  // no local lights: no passes, no buffers
+        return;
+    }
+    if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
+    if (!local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s)) return;
+    LightPassOptions options;
+    options.count = request.count_lights;
+    options.heat = s.debug.view == DebugView::Lights;
+    local_lights_->addPasses(graph, rc, scene, counters_, options);
+    const LocalLightStats& st = local_lights_->stats();
+    report.counters["lights.count"] = double(st.count);
+    report.counters["lights.build_ms"] = st.build_ms;
+    report.counters["lights.memory_bytes"] = double(st.memory_bytes);
+}
+
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
     RenderContext rc = context(view, s, time_s);
     FrameGraph graph;
@@ -192,6 +217,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
         addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene);
+        addLocalLightPasses(graph, rc, s, request, scene, report);
+    } else {
+        local_lights_.reset();
     }
     if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
     if (s.sky.enabled) {

@@ -10,6 +10,7 @@
 #include "renderer/render_context.h"
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
+#include "lighting/local_lights.h"
 #include "sky/atmosphere.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
@@ -36,6 +37,7 @@ struct FrameRequest {
     std::vector<unsigned char>* capture_ldr = nullptr;  // RGBA8 sRGB, top row first
     std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear), top row first
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
+    bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
 };
 
@@ -58,6 +60,7 @@ public:
     InputErrors prepare(const Settings& settings);
     Terrain* terrain() { return terrain_.get(); }
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
+    LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
@@ -74,6 +77,9 @@ public:
     std::uint64_t frameIndex() const { return frame_; }
 
 private:
+    void addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s, const FrameRequest& request,
+                             SceneTargets& scene, FrameReport& report);
+
     ShaderLibrary shaders_;
     GlDevice device_;
     TransientPool pool_{device_};
@@ -84,6 +90,7 @@ private:
     std::uint64_t frame_ = 0;
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
+    std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame

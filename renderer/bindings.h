@@ -13,5 +13,12 @@ constexpr int kTex2 = 2;
 constexpr int kTex3 = 3;
 constexpr int kTex4 = 4;
 constexpr int kTerrainNodes = 1;   // shader storage: selected terrain node instances
+constexpr int kLightGrid = 1;      // uniform block: LightGrid (lighting/shaders/lights.glsl)
+constexpr int kLights = 2;         // shader storage: local lights
+constexpr int kLightCells = 3;     // shader storage: per tile / cluster (offset, count)
+constexpr int kLightIndices = 4;   // shader storage: light index lists
+constexpr int kLightHash = 5;      // shader storage: hashed light octree tables
+constexpr int kLightSpheres = 6;   // shader storage: view-space bounding spheres (culling)
+constexpr int kAux = 7;            // shader storage: a pass's second counter or pool
 
 }  // namespace vista::binding

@@ -16,4 +16,11 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kTex3 == BINDING_TEX_3);
     CHECK(binding::kTex4 == BINDING_TEX_4);
     CHECK(binding::kTerrainNodes == BINDING_TERRAIN_NODES);
+    CHECK(binding::kLightGrid == BINDING_LIGHT_GRID);
+    CHECK(binding::kLights == BINDING_LIGHTS);
+    CHECK(binding::kLightCells == BINDING_LIGHT_CELLS);
+    CHECK(binding::kLightIndices == BINDING_LIGHT_INDICES);
+    CHECK(binding::kLightHash == BINDING_LIGHT_HASH);
+    CHECK(binding::kLightSpheres == BINDING_LIGHT_SPHERES);
+    CHECK(binding::kAux == BINDING_AUX);
 }

@@ -1,0 +1,373 @@
+// Local lights: CPU preparation, GPU buffers, the culling and shading passes.
+#include "lighting/local_lights.h"
+
+#include "lighting/light_settings.h"
+#include "renderer/bindings.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace vista {
+
+namespace {
+
+struct GpuLight {
+    glm::vec4 position_radius, color_scale, direction_offset;
+};
+static_assert(sizeof(GpuLight) == 48, "GpuLight must match LocalLight in lights.glsl");
+
+// std140 mirror of LightGrid in lighting/shaders/lights.glsl.
+struct GridUniforms {
+    glm::uvec4 grid;    // light count, tile px, tiles x, tiles y
+    glm::uvec4 grid2;   // slices, max per cell, pool capacity, hash levels
+    glm::vec4 slices;   // near_0, 1 / ln ratio, ln ratio, tan(fov_y / 2)
+    glm::vec4 hash_origin;  // camera - hash origin, node size
+    glm::vec4 grid3;    // aspect
+};
+
+constexpr int kHashLevelWords = 16;
+constexpr int kHashHeaderWords = (LightHash::kMaxLevels + 1) * kHashLevelWords;
+
+const char* methodDefine(LightCulling m) {
+    switch (m) {
+        case LightCulling::Naive: return "LIGHTS_NAIVE";
+        case LightCulling::Tiled: return "LIGHTS_TILED";
+        case LightCulling::Clustered: return "LIGHTS_CLUSTERED";
+        case LightCulling::Hashed: return "LIGHTS_HASHED";
+    }
+    return "LIGHTS_NAIVE";
+}
+
+std::string entriesKey(const LightsSettings& s) {
+    std::string key;
+    for (const NamedLight& l : s.lights) key += formatLightSpec(l.light) + ";";
+    key += "|";
+    for (const NamedLightVolume& v : s.volumes) key += formatVolumeSpec(v.volume) + ";";
+    return key;
+}
+
+std::vector<Light> collect(const LightsSettings& s) {
+    std::vector<Light> explicit_lights;
+    std::vector<LightVolume> volumes;
+    for (const NamedLight& l : s.lights) explicit_lights.push_back(l.light);
+    for (const NamedLightVolume& v : s.volumes) volumes.push_back(v.volume);
+    return collectLights(explicit_lights, volumes);
+}
+
+bool sameAnimation(const LightAnimation& a, const LightAnimation& b) {
+    return a.motion == b.motion && a.amplitude_m == b.amplitude_m && a.period_s == b.period_s &&
+           a.fraction == b.fraction && a.seed == b.seed;
+}
+
+}  // namespace
+
+std::uint64_t sceneLightCount(const LightsSettings& s) {
+    if (!s.enabled) return 0;
+    std::uint64_t n = s.lights.size();
+    for (const NamedLightVolume& v : s.volumes) n += lightCount(v.volume);
+    return n;
+}
+
+std::vector<std::string> localLightPrograms() {
+    return {"lighting/shaders/light_cull.glsl", "lighting/shaders/light_shade.glsl"};
+}
+
+void LocalLights::GpuBuffer::reserve(std::size_t bytes, std::string_view name) {
+    bytes = std::max<std::size_t>(bytes, 16);
+    if (buffer.id() != 0 && std::size_t(buffer.size()) >= bytes) return;
+    std::size_t grown = std::max(bytes, std::size_t(buffer.size()) * 3 / 2);
+    buffer = gl::Buffer::create(GLsizeiptr(grown), nullptr, GL_DYNAMIC_STORAGE_BIT, name);
+}
+
+void LocalLights::GpuBuffer::upload(const void* data, std::size_t bytes, std::string_view name) {
+    reserve(bytes, name);
+    if (bytes > 0) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(bytes), data);
+}
+
+LocalLights::LocalLights() {
+    for (gl::Buffer& b : overflow_ring_) {
+        const std::uint32_t zero[2] = {0, 0};
+        b = gl::Buffer::create(sizeof(zero), zero, GL_DYNAMIC_STORAGE_BIT, "lights.overflow");
+    }
+}
+
+LocalLights::~LocalLights() {
+    for (GLsync f : overflow_fence_)
+        if (f) glDeleteSync(f);
+}
+
+void LocalLights::readOverflow() {
+    // The oldest buffer of the ring (written three frames ago), if the GPU is done with it (never waits).
+    const std::size_t slot = write_slot_;
+    GLsync& fence = overflow_fence_[slot];
+    if (!fence) return;
+    if (glClientWaitSync(fence, 0, 0) == GL_TIMEOUT_EXPIRED) return;
+    glDeleteSync(fence);
+    fence = nullptr;
+    std::uint32_t value = 0;
+    glGetNamedBufferSubData(overflow_ring_[slot].id(), 0, sizeof(value), &value);
+    stats_.overflow = value;
+    if (value > 0 && !overflow_warned_)
+        std::fprintf(stderr,
+                     "vista: lights: %u tile/cluster light lists overflowed [lights] max_lights_per_cell = %d; "
+                     "those cells shade every light (correct, slower). Raise max_lights_per_cell (1..65536) or "
+                     "lower the light radii.\n",
+                     value, settings_.max_lights_per_cell);
+    overflow_warned_ = value > 0;
+}
+
+bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& m, double time_s) {
+    const auto start = std::chrono::steady_clock::now();
+    readOverflow();
+    settings_ = s;
+    // Collect when the entries change; animate every frame when something moves.
+    std::string key = entriesKey(s);
+    bool changed = key != key_;
+    if (changed) {
+        base_ = s.enabled ? collect(s) : std::vector<Light>{};
+        key_ = std::move(key);
+        hash_built_ = false;
+    }
+    const bool animated = s.animation.motion != LightMotion::None && s.animation.period_s > 0.0f;
+    if (changed || animated || !sameAnimation(animation_, s.animation)) {
+        if (animated)
+            animateLights(base_, s.animation, time_s, animated_);
+        else
+            animated_ = base_;
+        animation_ = s.animation;
+        world_spheres_.resize(animated_.size());
+        for (std::size_t i = 0; i < animated_.size(); ++i) world_spheres_[i] = boundingSphere(animated_[i]);
+        hash_uploaded_ = hash_uploaded_ && !changed && !animated;
+    }
+    stats_.count = animated_.size();
+    if (animated_.empty()) return false;
+
+    // The method: hashed needs its octree; when it cannot be built within the memory bound,
+    // clustered serves instead (said once).
+    stats_.method = s.culling;
+    if (s.culling == LightCulling::Hashed) {
+        LightHashSettings hs;
+        hs.node_size_m = s.hash_node_m;
+        hs.memory_budget_bytes = std::size_t(double(s.hash_memory_mb) * 1024.0 * 1024.0);
+        hs.slack = s.hash_slack;
+        const bool same_settings = hs.node_size_m == hash_settings_.node_size_m &&
+                                   hs.memory_budget_bytes == hash_settings_.memory_budget_bytes &&
+                                   hs.slack == hash_settings_.slack;
+        if (!hash_built_ || !same_settings) {
+            hash_settings_ = hs;
+            stats_.hash = hash_.build(world_spheres_, hs);
+            hash_built_ = true;
+            hash_uploaded_ = false;
+        } else if (!hash_uploaded_) {
+            stats_.hash = hash_.update(world_spheres_);
+        }
+        if (!stats_.hash.ok || stats_.hash.degraded) {
+            if (stats_.hash.message != hash_message_)
+                std::fprintf(stderr, "vista: lights: hashed culling: %s%s\n", stats_.hash.message.c_str(),
+                             stats_.hash.ok ? "" : "; using clustered culling instead");
+            hash_message_ = stats_.hash.message;
+        }
+        if (!stats_.hash.ok) stats_.method = LightCulling::Clustered;
+    } else if (hash_built_) {
+        hash_ = LightHash();  // another method: the octree's memory goes
+        hash_built_ = false;
+        hash_buf_ = {};
+    }
+
+    // Light buffer, camera-relative (the subtraction in double keeps far-out scenes exact).
+    const std::size_t n = animated_.size();
+    std::vector<GpuLight> gpu(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Light& l = animated_[i];
+        const SpotCone cone = spotCone(l);
+        gpu[i].position_radius = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
+        gpu[i].color_scale = glm::vec4(l.color * l.intensity, cone.scale);
+        glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
+        gpu[i].direction_offset = glm::vec4(dir, cone.offset);
+    }
+    lights_buf_.upload(gpu.data(), n * sizeof(GpuLight), "lights");
+
+    GridUniforms u{};
+    u.grid = glm::uvec4(std::uint32_t(n), 16u, 1u, 1u);
+    u.slices = glm::vec4(float(view.near_m), 1.0f, 1.0f, float(std::tan(glm::radians(view.fov_deg) * 0.5)));
+    u.grid3 = glm::vec4(float(double(view.width) / double(view.height)), 0.0f, 0.0f, 0.0f);
+    stats_.tiles_x = stats_.tiles_y = stats_.slices = 0;
+    if (stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered) {
+        ClusterGridParams p;
+        p.width_px = view.width;
+        p.height_px = view.height;
+        p.tile_px = tilePixels(s.tile_size);
+        p.fov_y_deg = view.fov_deg;
+        p.near0_m = s.cluster_near_m > 0.0f ? double(s.cluster_near_m) : view.near_m;
+        p.far_m = std::max(double(s.cluster_far_m), p.near0_m * 2.0);
+        p.slices = s.cluster_slices;
+        p.max_slices = kMaxAutoSlices;
+        grid_ = makeClusterGrid(p);
+        const bool clustered = stats_.method == LightCulling::Clustered;
+        const int slices = clustered ? grid_.slices : 1;
+        stats_.tiles_x = grid_.tiles_x;
+        stats_.tiles_y = grid_.tiles_y;
+        stats_.slices = slices;
+        const std::size_t tiles = std::size_t(grid_.tiles_x) * std::size_t(grid_.tiles_y);
+        const std::size_t cap = std::size_t(s.max_lights_per_cell);
+        const std::size_t entries = clustered ? std::min<std::size_t>(2 * tiles * cap, std::size_t(1) << 26) : tiles * cap;
+        cells_buf_.reserve(tiles * std::size_t(slices) * 8, "lights.cells");
+        indices_buf_.reserve(entries * 4, "lights.indices");
+        u.grid = glm::uvec4(std::uint32_t(n), std::uint32_t(grid_.tile_px), std::uint32_t(grid_.tiles_x),
+                            std::uint32_t(grid_.tiles_y));
+        u.grid2 = glm::uvec4(std::uint32_t(slices), std::uint32_t(cap), std::uint32_t(entries), 0u);
+        u.slices = glm::vec4(float(grid_.near0_m), float(1.0 / grid_.log_ratio), float(grid_.log_ratio),
+                             float(grid_.tan_half_fov_y));
+        // View-space bounding spheres for the culling pass.
+        std::vector<glm::vec4> spheres(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::dvec3 rel = world_spheres_[i].center - view.position;
+            spheres[i] = glm::vec4(float(glm::dot(rel, m.right)), float(glm::dot(rel, m.up)),
+                                   float(-glm::dot(rel, m.forward)), float(world_spheres_[i].radius));
+        }
+        spheres_buf_.upload(spheres.data(), n * sizeof(glm::vec4), "lights.spheres");
+        if (clustered) pool_buf_.reserve(4, "lights.pool");
+    } else {
+        cells_buf_ = {};
+        spheres_buf_ = {};
+        pool_buf_ = {};
+        if (stats_.method == LightCulling::Naive) indices_buf_ = {};
+    }
+    if (stats_.method == LightCulling::Hashed) {
+        if (!hash_uploaded_) uploadHash();
+        const glm::dvec3 o = view.position - hash_.origin();
+        u.grid2.w = std::uint32_t(hash_.levels());
+        u.hash_origin = glm::vec4(glm::vec3(o), float(hash_.nodeSize()));
+    }
+    grid_ubo_.upload(&u, sizeof(u), "lights.grid");
+
+    stats_.memory_bytes = 0;
+    for (const GpuBuffer* b : {&lights_buf_, &spheres_buf_, &cells_buf_, &indices_buf_, &hash_buf_, &grid_ubo_, &pool_buf_})
+        stats_.memory_bytes += b->buffer.id() ? std::size_t(b->buffer.size()) : 0;
+    stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
+void LocalLights::uploadHash() {
+    // Whole tables after any change: the incremental part is on the CPU (no full rebuild);
+    // uploading ranges (PerfectSpatialHash::dirty()) would be the next step.
+    std::vector<std::uint32_t> words(kHashHeaderWords, 0u);
+    auto append = [&](const PerfectSpatialHash& t, std::size_t header, bool data) {
+        words[header + 0] = std::uint32_t(words.size());
+        for (std::uint64_t v : t.values()) {
+            words.push_back(std::uint32_t(v));
+            if (data) words.push_back(std::uint32_t(v >> 32));
+        }
+        words[header + 1] = std::uint32_t(words.size());
+        words.insert(words.end(), t.offsets().begin(), t.offsets().end());
+        const std::uint32_t r = std::uint32_t(t.offsetSide());
+        words[header + 2] = std::uint32_t(std::max(t.tableSide(), 1));
+        words[header + 3] = std::max(r * r * r, 1u);
+        words[header + 4] = std::uint32_t(t.quotientSide());
+    };
+    for (int l = 0; l < hash_.levels(); ++l) append(hash_.nodeTable(l), std::size_t(l) * kHashLevelWords, false);
+    for (int l = 1; l <= hash_.levels(); ++l) append(hash_.dataTable(l), std::size_t(l) * kHashLevelWords + 8, true);
+    hash_buf_.upload(words.data(), words.size() * 4, "lights.hash");
+    std::span<const std::uint32_t> indices = hash_.indices();
+    indices_buf_.upload(indices.data(), indices.size_bytes(), "lights.indices");
+    hash_.clearDirty();
+    hash_uploaded_ = true;
+}
+
+void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets,
+                            CounterReadback& counters, const LightPassOptions& options) {
+    const LightCulling method = stats_.method;
+    const bool culled = method == LightCulling::Tiled || method == LightCulling::Clustered;
+    auto bindBuffers = [this]() {
+        glBindBufferBase(GL_UNIFORM_BUFFER, binding::kLightGrid, grid_ubo_.buffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLights, lights_buf_.buffer.id());
+        if (cells_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCells, cells_buf_.buffer.id());
+        if (indices_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndices, indices_buf_.buffer.id());
+        if (hash_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightHash, hash_buf_.buffer.id());
+        if (spheres_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSpheres, spheres_buf_.buffer.id());
+    };
+
+    if (culled) {
+        struct Data {
+            TextureHandle depth;
+        };
+        graph.addPass<Data>("lights.cull",
+            [&](PassBuilder& b, Data& d) {
+                d.depth = b.read(targets.depth);
+                b.sideEffect();  // writes the light lists lights.shade reads
+            },
+            [this, &rc, &counters, method, bindBuffers](const Data& d, PassContext& ctx) {
+                const std::size_t slot = write_slot_;
+                write_slot_ = (write_slot_ + 1) % overflow_ring_.size();
+                GLuint overflow = overflow_ring_[slot].id();
+                if (overflow_fence_[slot]) {  // not read back yet: drop it, keep the ring going
+                    glDeleteSync(overflow_fence_[slot]);
+                    overflow_fence_[slot] = nullptr;
+                }
+                const std::uint32_t zero = 0;
+                glClearNamedBufferData(overflow, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+                if (pool_buf_.buffer.id())
+                    glClearNamedBufferData(pool_buf_.buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+                glUseProgram(rc.shaders.get("lighting/shaders/light_cull.glsl", {methodDefine(method)})->id());
+                bindBuffers();
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, overflow);
+                if (pool_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());
+                glBindTextureUnit(binding::kTex0, ctx.texture(d.depth));
+                glDispatchCompute(GLuint(grid_.tiles_x), GLuint(grid_.tiles_y), 1);
+                glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+                // For the stats: a copy of the overflow count per frame; for the warning: the ring.
+                GLuint stat = counters.request(rc.frame, "lights.overflow");
+                glCopyNamedBufferSubData(overflow, stat, 0, 0, 4);
+                overflow_fence_[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+            });
+    }
+
+    struct Data {
+        TextureHandle depth, albedo, normal, hdr, heat;
+    };
+    const Data& d = graph.addPass<Data>("lights.shade",
+        [&](PassBuilder& b, Data& data) {
+            data.depth = b.read(targets.depth);
+            data.albedo = b.read(targets.albedo);
+            data.normal = b.read(targets.normal);
+            data.hdr = b.write(targets.hdr);
+            if (options.heat) {
+                TextureDesc desc = b.desc(targets.hdr);
+                desc.format = PixelFormat::R32F;
+                data.heat = b.write(b.create("lights.heat", desc));
+            }
+        },
+        [this, &rc, &counters, method, options, bindBuffers](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            GLuint fb = data.heat.valid() ? rc.device.framebuffer({ctx.texture(data.hdr), ctx.texture(data.heat)})
+                                          : rc.device.framebuffer({ctx.texture(data.hdr)});
+            bindTarget(fb, desc.width, desc.height);
+            std::vector<std::string> defines = {methodDefine(method)};
+            if (options.count) defines.push_back("COUNT_LIGHTS");
+            if (data.heat.valid()) defines.push_back("LIGHT_HEAT");
+            glUseProgram(rc.shaders.get("lighting/shaders/light_shade.glsl", defines)->id());
+            bindBuffers();
+            if (options.count) {
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "lights.evaluations"));
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "lights.exact"));
+            }
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            glBindTextureUnit(binding::kTex1, ctx.texture(data.albedo));
+            glBindTextureUnit(binding::kTex2, ctx.texture(data.normal));
+            glEnablei(GL_BLEND, 0);
+            glBlendFunci(0, GL_ONE, GL_ONE);
+            if (data.heat.valid()) glDisablei(GL_BLEND, 1);
+            drawFullscreen(rc);
+            glDisablei(GL_BLEND, 0);
+            if (options.count) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        });
+    targets.hdr = d.hdr;
+    if (d.heat.valid()) targets.light_heat = d.heat;
+}
+
+}  // namespace vista

@@ -1,0 +1,110 @@
+// Local (point and spot) lights of a scene on the GPU: the long-lived light buffers and culling
+// structures, and the passes that light the G-buffer with them.
+//
+// Per frame (prepare): the [lights] entries are collected when they change, animated, and
+// uploaded camera-relative; the hashed method's world-space octree (lighting/light_hash.h) is
+// updated incrementally. Passes (addPasses):
+//   lights.cull   (tiled, clustered) compute: per-tile / per-cluster light lists on the GPU, no
+//                 readback (lighting/shaders/light_cull.glsl);
+//   lights.shade  full screen: each lit pixel shades its candidate lights, added to the HDR target
+//                 (lighting/shaders/light_shade.glsl).
+// A scene with no local lights (or [lights] enabled = false) makes no LocalLights at all: no
+// passes, no buffers.
+//
+// GPU layouts (std430, lighting/shaders/lights.glsl):
+//   lights    3 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
+//             scale; unit spot axis + cone offset (lighting/lights.h SpotCone; point: 0, 1).
+//   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
+//   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
+//             tiles_x (tile.y + tiles_y slice)); count 0xFFFFFFFF = overflow, shade every light.
+//   indices   tiled: max_lights_per_cell entries per tile; clustered: a pool of
+//             2 * tiles * max_lights_per_cell entries filled by an atomic counter; hashed:
+//             LightHash::indices().
+//   hash      for each level l in 0..20, 16 words: node table l (values base, offsets base, mbar,
+//             rbar^3, Q, 0, 0, 0) and data table l (the same); then the tables: node values one
+//             word per slot, data values two words (offset, count), offsets one word per entry.
+#pragma once
+
+#include "config/settings.h"
+#include "lighting/cluster_grid.h"
+#include "lighting/light_hash.h"
+#include "lighting/lights.h"
+#include "renderer/gl/objects.h"
+#include "renderer/pass_timers.h"
+#include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+// Lights the settings describe (explicit entries, then volumes), before animation. 0 when
+// [lights] is disabled.
+std::uint64_t sceneLightCount(const LightsSettings& s);
+
+// Every program the local lights use (for FrameRenderer::allPrograms()).
+std::vector<std::string> localLightPrograms();
+
+struct LocalLightStats {
+    std::uint64_t count = 0;        // lights this frame
+    double build_ms = 0.0;          // CPU: collect, animate, hash update, upload
+    std::size_t memory_bytes = 0;   // GPU buffers held
+    LightCulling method = LightCulling::Clustered;  // the method used (hashed falls back to clustered when it cannot build)
+    int tiles_x = 0, tiles_y = 0, slices = 0;
+    std::uint64_t overflow = 0;     // overflowed cells, as last read back (a few frames late)
+    LightHashStats hash;            // hashed only
+};
+
+struct LightPassOptions {
+    bool count = false;  // lights.evaluations and lights.exact counters
+    bool heat = false;   // targets.light_heat for the lights debug view
+};
+
+class LocalLights {
+public:
+    LocalLights();
+    ~LocalLights();
+    LocalLights(const LocalLights&) = delete;
+    LocalLights& operator=(const LocalLights&) = delete;
+
+    // The CPU side of a frame: lights at time_s, buffers for the view. False when there are
+    // no lights to draw (then add no passes).
+    bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s);
+    // Needs targets.depth, .albedo, .normal; adds to targets.hdr (and makes targets.light_heat).
+    void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
+                   const LightPassOptions& options);
+    const LocalLightStats& stats() const { return stats_; }
+    std::span<const Light> lights() const { return animated_; }  // this frame's, world space
+
+private:
+    struct GpuBuffer {
+        gl::Buffer buffer;
+        void upload(const void* data, std::size_t bytes, std::string_view name);  // grows, never shrinks
+        void reserve(std::size_t bytes, std::string_view name);
+    };
+    void uploadHash();
+    void readOverflow();
+
+    std::string key_;                 // the entries the lights were collected from
+    std::vector<Light> base_, animated_;
+    LightAnimation animation_;
+    std::vector<Sphere> world_spheres_;
+    LightHash hash_;
+    LightHashSettings hash_settings_;
+    bool hash_built_ = false, hash_uploaded_ = false;
+    std::string hash_message_;
+    ClusterGrid grid_;
+    LightsSettings settings_;
+    GpuBuffer lights_buf_, spheres_buf_, cells_buf_, indices_buf_, hash_buf_, grid_ubo_, pool_buf_;
+    std::array<gl::Buffer, 3> overflow_ring_;
+    std::array<GLsync, 3> overflow_fence_{};
+    std::size_t write_slot_ = 0;  // overflow ring slot the next cull pass writes
+    bool overflow_warned_ = false;
+    LocalLightStats stats_;
+};
+
+}  // namespace vista

@@ -1,0 +1,178 @@
+// "lights.cull": builds the per-tile (LIGHTS_TILED) or per-cluster (LIGHTS_CLUSTERED) light
+// lists on the GPU, one workgroup of 16 x 16 threads per screen tile (16 or 32 px).
+//   1. The tile's depth range from its pixels (sky pixels ignored); clustered also marks the
+//      depth slices its pixels fall in.
+//   2. Every light's bounding sphere (view space) against the tile's frustum, four side planes
+//      and the depth range, 256 lights at a time; hits are compacted in light order (so lists,
+//      and images, do not depend on thread timing).
+//   3. Tiled: the list goes to the tile's fixed slot of max_lights_per_cell entries.
+//      Clustered: for each occupied slice (one thread each), the tile's lights that touch the
+//      cluster's box go to a slot taken from a shared pool (atomic counter).
+// A list longer than max_lights_per_cell (or than the pool) is not cut: the cell is marked
+// kOverflowCount, which shading reads as "every light" (conservative), and the overflow counter
+// is raised. Unoccupied clusters get empty lists.
+#ifdef COMPUTE_SHADER
+#include "../../renderer/shaders/common.glsl"
+#include "../../renderer/shaders/gbuffer.glsl"
+#include "brdf.glsl"
+#include "lights.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
+layout(std430, binding = BINDING_LIGHT_SPHERES) readonly buffer Spheres { vec4 u_spheres[]; };  // view space centre, radius
+layout(std430, binding = BINDING_COUNTERS) buffer Overflow { uint u_overflow; };
+layout(std430, binding = BINDING_AUX) buffer Pool { uint u_pool_used; };
+
+const uint kSharedCap = 2048u;  // tile list capacity in shared memory (clustered)
+shared uint s_depth_min, s_depth_max;  // float bits of view depths (positive: ordered as uints)
+shared uint s_slices[8];               // occupied slices (clustered)
+shared uint s_mask[8];                 // hits of the current 256 lights
+shared uint s_count;                   // tile list length (may exceed the capacity)
+#ifdef LIGHTS_CLUSTERED
+shared uint s_list[kSharedCap];
+#endif
+
+// The tile frustum's side planes in view space (camera looking along -z): inward normals.
+vec3 plane(float slope, float sgn, bool horizontal) {
+    vec3 n = horizontal ? vec3(0.0, sgn, sgn * slope) : vec3(sgn, 0.0, sgn * slope);
+    return n * inversesqrt(1.0 + slope * slope);
+}
+
+void main() {
+    uint t = gl_LocalInvocationIndex;
+    uvec2 tile = gl_WorkGroupID.xy;
+    uint tile_px = u_grid.y;
+    if (t == 0u) {
+        s_depth_min = floatBitsToUint(3.0e38);
+        s_depth_max = 0u;
+        s_count = 0u;
+    }
+    if (t < 8u) s_slices[t] = 0u;
+    barrier();
+
+    // 1. Depth range (and occupied slices) of the tile's pixels; each thread takes
+    //    (tile_px / 16)^2 of them.
+    ivec2 size = textureSize(u_depth, 0);
+    uint per = tile_px / 16u;
+    for (uint j = 0u; j < per * per; ++j) {
+        ivec2 p = ivec2(tile * tile_px + gl_LocalInvocationID.xy * per + uvec2(j % per, j / per));
+        if (any(greaterThanEqual(p, size))) continue;
+        float depth = texelFetch(u_depth, p, 0).r;
+        if (depth <= 0.0) continue;
+        float z = linearDepth(depth);
+        atomicMin(s_depth_min, floatBitsToUint(z));
+        atomicMax(s_depth_max, floatBitsToUint(z));
+#ifdef LIGHTS_CLUSTERED
+        uint k = sliceOf(z);
+        atomicOr(s_slices[k >> 5], 1u << (k & 31u));
+#endif
+    }
+    barrier();
+    float zmin = uintBitsToFloat(s_depth_min) * (1.0 - 1e-4), zmax = uintBitsToFloat(s_depth_max) * (1.0 + 1e-4);
+    bool empty = s_depth_max == 0u;
+
+    // The tile's edges as view-space slopes x / depth, y / depth (lighting/cluster_grid.h).
+    vec2 inv = u_viewport.zw * 2.0;
+    vec2 lo = (vec2(tile * tile_px) * inv - 1.0), hi = (vec2(min((tile + 1u) * tile_px, uvec2(size))) * inv - 1.0);
+    float sx = u_slices.w * u_grid3.x, sy = u_slices.w;
+    vec4 slopes = vec4(lo.x * sx, hi.x * sx, lo.y * sy, hi.y * sy);
+    vec3 left = plane(slopes.x, 1.0, false), right = plane(slopes.y, -1.0, false);
+    vec3 bottom = plane(slopes.z, 1.0, true), top = plane(slopes.w, -1.0, true);
+
+    // 2. Lights against the tile, compacted in light order.
+    uint light_count = empty ? 0u : u_grid.x;
+    uint cell_cap = u_grid2.y;
+#ifdef LIGHTS_TILED
+    uint cell = tile.x + u_grid.z * tile.y;
+    uint base_out = cell * cell_cap;
+#endif
+    for (uint base = 0u; base < light_count; base += 256u) {
+        if (t < 8u) s_mask[t] = 0u;
+        barrier();
+        uint i = base + t;
+        bool hit = false;
+        if (i < light_count) {
+            vec4 s = u_spheres[i];
+            float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);  // guard against float rounding
+            float depth = -s.z;
+            hit = s.w > 0.0 && depth + r >= zmin && depth - r <= zmax && dot(left, s.xyz) >= -r &&
+                  dot(right, s.xyz) >= -r && dot(bottom, s.xyz) >= -r && dot(top, s.xyz) >= -r;
+        }
+        if (hit) atomicOr(s_mask[t >> 5], 1u << (t & 31u));
+        barrier();
+        if (hit) {
+            uint pos = s_count + bitCount(s_mask[t >> 5] & ((1u << (t & 31u)) - 1u));
+            for (uint w = 0u; w < (t >> 5); ++w) pos += bitCount(s_mask[w]);
+#ifdef LIGHTS_TILED
+            if (pos < cell_cap) u_light_indices[base_out + pos] = i;
+#else
+            if (pos < kSharedCap) s_list[pos] = i;
+#endif
+        }
+        barrier();
+        if (t == 0u) {
+            uint n = 0u;
+            for (uint w = 0u; w < 8u; ++w) n += bitCount(s_mask[w]);
+            s_count += n;
+        }
+        barrier();
+    }
+
+#ifdef LIGHTS_TILED
+    if (t == 0u) {
+        bool overflow = s_count > cell_cap;
+        u_light_cells[cell] = uvec2(base_out, overflow ? kOverflowCount : s_count);
+        if (overflow) atomicAdd(u_overflow, 1u);
+    }
+#else
+    // 3. One thread per slice: the tile's lights that touch the cluster's view-space box.
+    uint slices = u_grid2.x;
+    uint k = t;
+    if (k >= slices) return;
+    uint cell = tile.x + u_grid.z * (tile.y + u_grid.w * k);
+    bool occupied = ((s_slices[k >> 5] >> (k & 31u)) & 1u) != 0u;
+    if (!occupied || empty) {
+        u_light_cells[cell] = uvec2(0u, 0u);
+        return;
+    }
+    if (s_count > kSharedCap) {  // the tile list itself overflowed
+        u_light_cells[cell] = uvec2(0u, kOverflowCount);
+        atomicAdd(u_overflow, 1u);
+        return;
+    }
+    // Slice depths, cut to the tile's pixels: near_k = near_0 * ratio^k (slice 0 from 0, the last to infinity).
+    float dn = k == 0u ? 0.0 : u_slices.x * exp(float(k) * u_slices.z);
+    float df = k + 1u >= slices ? 3.0e38 : u_slices.x * exp(float(k + 1u) * u_slices.z);
+    dn = max(dn * (1.0 - 1e-4), zmin);
+    df = min(df * (1.0 + 1e-4), zmax);
+    vec3 box_min = vec3(min(slopes.x * dn, slopes.x * df), min(slopes.z * dn, slopes.z * df), -df);
+    vec3 box_max = vec3(max(slopes.y * dn, slopes.y * df), max(slopes.w * dn, slopes.w * df), -dn);
+    uint count = 0u;
+    for (uint j = 0u; j < s_count; ++j) {
+        vec4 s = u_spheres[s_list[j]];
+        float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
+        vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
+        if (dot(d, d) <= r * r) ++count;
+    }
+    uint offset = 0u;
+    bool overflow = count > cell_cap;
+    if (!overflow && count > 0u) {
+        offset = atomicAdd(u_pool_used, count);
+        overflow = offset + count > u_grid2.z;
+    }
+    if (overflow) {
+        u_light_cells[cell] = uvec2(0u, kOverflowCount);
+        atomicAdd(u_overflow, 1u);
+        return;
+    }
+    uint n = 0u;
+    for (uint j = 0u; j < s_count && n < count; ++j) {
+        vec4 s = u_spheres[s_list[j]];
+        float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
+        vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
+        if (dot(d, d) <= r * r) u_light_indices[offset + n++] = s_list[j];
+    }
+    u_light_cells[cell] = uvec2(offset, count);
+#endif
+}
+#endif

@@ -1,0 +1,63 @@
+// "lights.shade": every lit G-buffer pixel shades the local lights its culling method gives it
+// (LIGHTS_NAIVE: all; LIGHTS_TILED / LIGHTS_CLUSTERED: its tile's or cluster's list; LIGHTS_HASHED:
+// the hashed octree's list for its world position), added to the HDR target.
+// COUNT_LIGHTS adds the counters lights.evaluations (lights shaded) and lights.exact (of them,
+// those that reach the pixel); LIGHT_HEAT writes the evaluations per pixel for the debug view.
+#include "../../renderer/shaders/fullscreen.glsl"
+
+#ifdef FRAGMENT_SHADER
+#include "../../renderer/shaders/common.glsl"
+#include "../../renderer/shaders/counters.glsl"
+#include "../../renderer/shaders/gbuffer.glsl"
+#include "brdf.glsl"
+#include "lights.glsl"
+
+layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
+layout(binding = BINDING_TEX_1) uniform sampler2D u_albedo;
+layout(binding = BINDING_TEX_2) uniform sampler2D u_normal;
+#ifdef COUNT_LIGHTS
+layout(std430, binding = BINDING_COUNTERS) buffer Evaluations { uint u_eval_lo, u_eval_hi; };
+layout(std430, binding = BINDING_AUX) buffer Exact { uint u_exact_lo, u_exact_hi; };
+#endif
+layout(location = 0) out vec4 o_color;
+#ifdef LIGHT_HEAT
+layout(location = 1) out float o_heat;
+#endif
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+#ifdef LIGHT_HEAT
+    o_heat = 0.0;
+#endif
+    float depth = texelFetch(u_depth, p, 0).r;
+    Surface s = decodeSurface(texelFetch(u_albedo, p, 0), texelFetch(u_normal, p, 0));
+    if (depth <= 0.0 || !s.lit) {
+        o_color = vec4(0.0);
+        return;
+    }
+    vec3 position = positionFromDepth((vec2(p) + 0.5) * u_viewport.zw, depth);
+    vec3 v = safeNormalize(-position);
+#if defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED)
+    LightRange range = lightRange(p, linearDepth(depth));
+#elif defined(LIGHTS_HASHED)
+    LightRange range = lightRange(p, position);
+#else
+    LightRange range = LightRange(0u, u_grid.x, true);
+#endif
+    vec3 color = vec3(0.0);
+    uint exact = 0u;
+    for (uint i = 0u; i < range.count; ++i) {
+        bool reaches;
+        color += shadeLocalLight(u_lights[lightAt(range, i)], s, position, v, reaches);
+        exact += reaches ? 1u : 0u;
+    }
+#ifdef COUNT_LIGHTS
+    ADD_COUNTER64(u_eval_lo, u_eval_hi, range.count);
+    ADD_COUNTER64(u_exact_lo, u_exact_hi, exact);
+#endif
+#ifdef LIGHT_HEAT
+    o_heat = float(range.count);
+#endif
+    o_color = vec4(color, 0.0);
+}
+#endif
