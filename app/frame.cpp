@@ -188,7 +188,9 @@ void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& 
         return;
     }
     if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
-    if (!local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s)) return;
+    GroundHeight ground;
+    if (terrain_) ground = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
+    if (!local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground)) return;
     LightPassOptions options;
     options.count = request.count_lights;
     options.heat = s.debug.view == DebugView::Lights;

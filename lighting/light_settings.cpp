@@ -106,6 +106,9 @@ void describeVolume(SettingsVisitor& v, LightVolume& g) {
     double seed = g.seed;  // a double holds every uint32 exactly, an int does not
     v.field({"seed", "", "random hues and offsets"}, seed, 0.0, 4294967295.0);
     g.seed = std::uint32_t(seed);
+    v.field({"hue_min", "", "lowest random hue, fraction of the colour wheel"}, g.hue_min, 0.0f, 1.0f);
+    v.field({"hue_max", "", "highest random hue"}, g.hue_max, 0.0f, 1.0f);
+    v.field({"ground", "m", "height of every light above the terrain; -1 = the box's y"}, g.ground_m, -1.0f, 1.0e4f);
 }
 
 }  // namespace
@@ -138,7 +141,7 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
            lights);
     NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
     v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "
-                          "radius R (m), intensity I, saturation S, value V, jitter J, seed N"},
+                          "radius R (m), intensity I, saturation S, value V, jitter J, seed N, hue MIN MAX, ground H (m)"},
            volumes);
 }
 
@@ -212,9 +215,17 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out) {
             if (!r.numbers(key, v, 1, 0.0, 4294967295.0, error)) return error;
             if (v[0] != std::floor(v[0])) return "seed: " + str(v[0]) + " is not a whole number";
             out.seed = std::uint32_t(v[0]);
+        } else if (key == "hue") {
+            if (!r.numbers(key, v, 2, 0.0, 1.0, error)) return error;
+            if (v[0] > v[1]) return "hue: " + str(v[0]) + " " + str(v[1]) + ": the first must not exceed the second";
+            out.hue_min = float(v[0]);
+            out.hue_max = float(v[1]);
+        } else if (key == "ground") {
+            if (!r.numbers(key, v, 1, 0.0, 1e4, error)) return error;
+            out.ground_m = float(v[0]);
         } else {
             return "unknown word '" + std::string(key) +
-                   "' (expected count, radius, intensity, saturation, value, jitter or seed)";
+                   "' (expected count, radius, intensity, saturation, value, jitter, seed, hue or ground)";
         }
     }
     return {};
@@ -240,6 +251,8 @@ std::string formatVolumeSpec(const LightVolume& v) {
     s += "  radius " + str(v.radius_m) + "  intensity " + str(v.intensity);
     s += "  saturation " + str(v.saturation) + "  value " + str(v.value) + "  jitter " + str(v.jitter);
     s += "  seed " + std::to_string(v.seed);
+    if (v.hue_min != 0.0f || v.hue_max != 1.0f) s += "  hue " + str(v.hue_min) + " " + str(v.hue_max);
+    if (v.ground_m >= 0.0f) s += "  ground " + str(v.ground_m);
     return s;
 }
 

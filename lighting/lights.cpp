@@ -114,7 +114,8 @@ void generateLights(const LightVolume& volume, std::vector<Light>& out) {
             for (int x = 0; x < volume.count.x; ++x, ++index) {
                 Rng rng(hashIndex(volume.seed, index));
                 Light l;
-                l.color = hsvToRgb(float(rng.uniform()), volume.saturation, volume.value);
+                l.color = hsvToRgb(volume.hue_min + (volume.hue_max - volume.hue_min) * float(rng.uniform()), volume.saturation,
+                                   volume.value);
                 glm::dvec3 j(rng.uniform(), rng.uniform(), rng.uniform());
                 l.position = lo + (glm::dvec3(x, y, z) + 0.5 + (j - 0.5) * jitter) * cell;
                 l.radius_m = std::max(0.0f, volume.radius_m);

@@ -81,7 +81,7 @@ glm::vec3 hsvToRgb(float hue, float saturation, float value);
 
 // 002's light generation volume: count.x * count.y * count.z point lights on a regular grid at
 // the cell centres of the box [min_m, max_m], of one radius and intensity, each with a random
-// hue at the given saturation and value. jitter moves each light by up to +-jitter/2 of a cell
+// hue in [hue_min, hue_max] at the given saturation and value. jitter moves each light by up to +-jitter/2 of a cell
 // per axis (0: exact grid). Deterministic: light i's colour and offset depend only on seed and
 // i (x fastest, then y, then z), through splitmix64, on every platform.
 struct LightVolume {
@@ -94,6 +94,9 @@ struct LightVolume {
     float value = 1.0f;                   // HSV value, [0, 1]
     float jitter = 0.0f;                  // fraction of a cell, [0, 1]
     std::uint32_t seed = 23;
+    float hue_min = 0.0f, hue_max = 1.0f; // the random hue's range, fractions of the colour wheel, [0, 1]
+    float ground_m = -1.0f;               // m: >= 0 puts every light this high above the terrain
+                                          // (the box's y range is then ignored); < 0: off
 };
 // Number of lights the volume makes (0 if any count is below 1).
 std::uint64_t lightCount(const LightVolume& volume);

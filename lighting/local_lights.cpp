@@ -51,20 +51,26 @@ std::string entriesKey(const LightsSettings& s) {
     return key;
 }
 
-std::vector<Light> collect(const LightsSettings& s) {
-    std::vector<Light> explicit_lights;
-    std::vector<LightVolume> volumes;
-    for (const NamedLight& l : s.lights) explicit_lights.push_back(l.light);
-    for (const NamedLightVolume& v : s.volumes) volumes.push_back(v.volume);
-    return collectLights(explicit_lights, volumes);
-}
-
 bool sameAnimation(const LightAnimation& a, const LightAnimation& b) {
     return a.motion == b.motion && a.amplitude_m == b.amplitude_m && a.period_s == b.period_s &&
            a.fraction == b.fraction && a.seed == b.seed;
 }
 
 }  // namespace
+
+std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground) {
+    std::vector<Light> out;
+    for (const NamedLight& l : s.lights) out.push_back(l.light);
+    for (const NamedLightVolume& v : s.volumes) {
+        const std::size_t first = out.size();
+        generateLights(v.volume, out);
+        if (v.volume.ground_m < 0.0f) continue;
+        const double floor_y = std::min(v.volume.min_m.y, v.volume.max_m.y);
+        for (std::size_t i = first; i < out.size(); ++i)
+            out[i].position.y = (ground ? ground(out[i].position.x, out[i].position.z) : floor_y) + v.volume.ground_m;
+    }
+    return out;
+}
 
 std::uint64_t sceneLightCount(const LightsSettings& s) {
     if (!s.enabled) return 0;
@@ -121,15 +127,16 @@ void LocalLights::readOverflow() {
     overflow_warned_ = value > 0;
 }
 
-bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& m, double time_s) {
+bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& m, double time_s,
+                          const GroundHeight& ground) {
     const auto start = std::chrono::steady_clock::now();
     readOverflow();
     settings_ = s;
     // Collect when the entries change; animate every frame when something moves.
-    std::string key = entriesKey(s);
+    std::string key = entriesKey(s) + (ground ? "ground" : "");
     bool changed = key != key_;
     if (changed) {
-        base_ = s.enabled ? collect(s) : std::vector<Light>{};
+        base_ = s.enabled ? collectSceneLights(s, ground) : std::vector<Light>{};
         key_ = std::move(key);
         hash_built_ = false;
     }

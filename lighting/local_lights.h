@@ -36,11 +36,18 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace vista {
+
+using GroundHeight = std::function<double(double x_m, double z_m)>;
+
+// The lights of [lights]: explicit entries, then each volume's; volumes with `ground` put their
+// lights that high above ground(x, z) (above the box's lower y without a ground function).
+std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground);
 
 // Lights the settings describe (explicit entries, then volumes), before animation. 0 when
 // [lights] is disabled.
@@ -73,7 +80,9 @@ public:
 
     // The CPU side of a frame: lights at time_s, buffers for the view. False when there are
     // no lights to draw (then add no passes).
-    bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s);
+    // ground (may be empty) gives the terrain height (m) at world x, z for volumes with `ground`.
+    bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s,
+                 const GroundHeight& ground);
     // Needs targets.depth, .albedo, .normal; adds to targets.hdr (and makes targets.light_heat).
     void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
                    const LightPassOptions& options);
