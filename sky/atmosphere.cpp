@@ -61,7 +61,7 @@ double cameraAltitudeM(const RenderContext& rc) { return std::max(rc.view.positi
 
 // std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
 struct SkyAtmosphere::Uniforms {
-    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun;
+    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon;
     glm::ivec4 sizes, sizes2;
     glm::vec4 gl[16];
     glm::ivec4 gl_count;
@@ -106,7 +106,7 @@ void SkyAtmosphere::invalidate() {
 }
 
 void SkyAtmosphere::upload(const Uniforms& u) {
-    static_assert(sizeof(Uniforms) == 448, "Uniforms must match the std140 block");
+    static_assert(sizeof(Uniforms) == 464, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
 }
@@ -130,6 +130,12 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
     u.albedo = glm::vec4(glm::vec3(p.ground_albedo), 0.0f);
     u.solar = glm::vec4(glm::vec3(p.solar_irradiance) * sky.sun_illuminance, sky.sun_illuminance);
     u.sun = glm::vec4(glm::vec3(sun), 0.0f);
+    {
+        // In double: float loses the few metres between the camera and the ground.
+        const double r = p.bottom_radius + altitude_m;
+        const double mu_h = -std::sqrt(altitude_m * (2.0 * p.bottom_radius + altitude_m)) / r;
+        u.horizon = glm::vec4(float(mu_h), float(std::sqrt(1.0 - mu_h * mu_h)), float(std::asin(mu_h)), 0.0f);
+    }
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
     u.sizes2 = {sky.sky_view_height, sky.transmittance_steps, sky.multiscatter_steps, sky.sky_view_steps};
     std::vector<double> gx, gw;

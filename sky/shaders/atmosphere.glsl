@@ -16,6 +16,7 @@ layout(std140, binding = SKY_BINDING_ATMOSPHERE) uniform AtmosphereUniforms {
     vec4 a_albedo;         // xyz ground albedo
     vec4 a_solar;          // xyz solar irradiance * sun illuminance (HDR), w sun illuminance
     vec4 a_sun;            // xyz unit vector towards the sun (world = planet frame at the camera)
+    vec4 a_horizon;        // the camera's horizon (double on the CPU): x mu_h, y sqrt(1 - mu_h^2), z elevation (rad, <= 0)
     ivec4 a_sizes;         // transmittance w, h, multiscatter size, sky-view w
     ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps
     vec4 a_gl[16];         // x Gauss-Legendre node on [0, 1], y weight (multiple-scattering sphere)
@@ -189,41 +190,57 @@ RaySums integrateRay(float r, float mu, float mu_s, float nu, float len, int ste
 }
 #endif
 
-// Sky-view LUT (Hillaire 2020 with its non-linear latitude): v in [0, 0.5) above the horizon,
-// [0.5, 1] below (towards the ground), each with a square-root mapping that puts texels at the
-// horizon; u = sqrt((1 - cos(azimuth from the sun)) / 2), dense towards the sun.
-vec2 skyViewUv(float r, float mu, float cos_azimuth) {
-    float R = bottomR();
-    float v_horizon = safeSqrt((r - R) * (r + R));
-    float beta = acos(clamp(v_horizon / r, -1.0, 1.0));  // angle of the horizon below horizontal
-    float zenith_horizon = PI - beta;
-    float zenith = acos(clamp(mu, -1.0, 1.0));
-    float v;
-    if (!intersectsGround(r, mu)) {
-        float c = clamp(zenith / zenith_horizon, 0.0, 1.0);
-        v = (1.0 - sqrt(1.0 - c)) * 0.5;
+// The camera's view rays, exact at the horizon. An acos of nearly equal angles loses ~1e-4 rad
+// in float (more than a pixel's distance from the horizon at 128x72), so the angle from the
+// horizon is taken as atan(sin, cos) of the difference, from the horizon the CPU computed in
+// double; the ground test and distance use the same horizon.
+float aboveHorizon(float mu) {
+    float cos_e = safeSqrt(1.0 - mu * mu);
+    return atan(mu * a_horizon.y - cos_e * a_horizon.x, cos_e * a_horizon.y + mu * a_horizon.x);
+}
+float cameraDistanceToGround(float mu) {
+    float r = a_radii.z, h = a_radii.w;
+    float root = r * safeSqrt((mu - a_horizon.x) * (mu + a_horizon.x));
+    float far_b = -r * mu + root;
+    return far_b > 0.0 ? h * (2.0 * bottomR() + h) / far_b : 0.0;
+}
+// Sky-view LUT (Hillaire 2020 with its non-linear latitude), the horizon kept sharp: the top
+// half of the rows covers the sky from the zenith (first row) to the grazing ray just above the
+// horizon (its last row), the bottom half the ground from the grazing ray just below it (its
+// first row) to the nadir, both with a square-root mapping dense at the horizon. Each half is
+// sampled only between its own first and last row centres, so bilinear filtering never mixes
+// sky and ground across the horizon. u = sqrt((1 - cos(azimuth from the sun)) / 2).
+int skyViewSkyRows() { return a_sizes2.x / 2; }
+vec2 skyViewUv(float above_horizon, float cos_azimuth) {
+    int n = a_sizes2.x, n_sky = skyViewSkyRows(), n_ground = n - n_sky;
+    float e_h = a_horizon.z;
+    float row;
+    if (above_horizon >= 0.0) {
+        float x = 1.0 - sqrt(clamp(above_horizon / (0.5 * PI - e_h), 0.0, 1.0));
+        row = 0.5 + x * float(n_sky - 1);
     } else {
-        float c = clamp((zenith - zenith_horizon) / max(beta, 1e-6), 0.0, 1.0);
-        v = sqrt(c) * 0.5 + 0.5;
+        float x = sqrt(clamp(-above_horizon / (0.5 * PI + e_h), 0.0, 1.0));
+        row = float(n_sky) + 0.5 + x * float(n_ground - 1);
     }
     float u = sqrt(clamp(0.5 - 0.5 * cos_azimuth, 0.0, 1.0));
-    return vec2(unitToUv(u, float(a_sizes.w)), unitToUv(v, float(a_sizes2.x)));
+    return vec2(unitToUv(u, float(a_sizes.w)), row / float(n));
 }
 
-void skyViewParams(vec2 uv, float r, out float mu, out float cos_azimuth) {
-    float R = bottomR();
-    float u = uvToUnit(uv.x, float(a_sizes.w)), v = uvToUnit(uv.y, float(a_sizes2.x));
-    float v_horizon = safeSqrt((r - R) * (r + R));
-    float beta = acos(clamp(v_horizon / r, -1.0, 1.0));
-    float zenith_horizon = PI - beta;
-    if (v < 0.5) {
-        float c = 1.0 - 2.0 * v;
-        c = 1.0 - c * c;
-        // Stay a hair above the horizon: the last texel row is the grazing sky ray.
-        mu = cos(min(zenith_horizon * c, zenith_horizon - 1e-5));
+// The ray of a texel: mu, cos of the azimuth from the sun, and whether it ends on the ground.
+void skyViewParams(ivec2 texel, out float mu, out float cos_azimuth, out bool ground) {
+    int n_sky = skyViewSkyRows(), n_ground = a_sizes2.x - n_sky;
+    float e_h = a_horizon.z, d;
+    ground = texel.y >= n_sky;
+    if (!ground) {
+        float x = 1.0 - float(texel.y) / float(max(n_sky - 1, 1));
+        d = (0.5 * PI - e_h) * x * x;
     } else {
-        float c = 2.0 * v - 1.0;
-        mu = cos(zenith_horizon + max(beta * c * c, 1e-5));
+        float x = float(texel.y - n_sky) / float(max(n_ground - 1, 1));
+        d = -(0.5 * PI + e_h) * x * x;
     }
+    // sin(e_h + d) without cancelling the two angles.
+    mu = clamp(a_horizon.x * cos(d) + a_horizon.y * sin(d), -1.0, 1.0);
+    if (ground) mu = min(mu, a_horizon.x);
+    float u = uvToUnit((float(texel.x) + 0.5) / float(a_sizes.w), float(a_sizes.w));
     cos_azimuth = 1.0 - 2.0 * u * u;
 }

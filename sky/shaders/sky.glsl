@@ -39,16 +39,18 @@ void main() {
     float mu = clamp(dir.y, -1.0, 1.0);
     float nu = clamp(dot(dir, sun), -1.0, 1.0);
     vec3 radiance;
-    bool hits_ground = intersectsGround(r, mu);
+    bool hits_ground = false;
     float t_enter = 0.0, len = 0.0;
     float r0 = r, mu0 = mu, mu_s0 = sun.y;
     bool in_atmosphere = r < Rt;
     if (in_atmosphere) {
-        len = hits_ground ? distanceToGround(r, mu) : distanceToTop(r, mu);
+        float above_horizon = aboveHorizon(mu);
+        hits_ground = above_horizon < 0.0;
+        len = hits_ground ? cameraDistanceToGround(mu) : distanceToTop(r, mu);
         vec2 h = dir.xz, s = sun.xz;
         float hl = dot(h, h), sl = dot(s, s);
         float cos_az = hl > 1e-12 && sl > 1e-12 ? dot(h, s) * inversesqrt(hl * sl) : 1.0;
-        radiance = texture(u_sky_view, skyViewUv(r, mu, cos_az)).rgb;
+        radiance = texture(u_sky_view, skyViewUv(above_horizon, cos_az)).rgb;
     } else {
         // From above the atmosphere: march from where the ray enters it.
         radiance = vec3(0.0);

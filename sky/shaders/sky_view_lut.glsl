@@ -15,7 +15,8 @@ void main() {
     if (p.x >= a_sizes.w || p.y >= a_sizes2.x) return;
     float r = a_radii.z;
     float mu, cos_az;
-    skyViewParams((vec2(p) + 0.5) / vec2(a_sizes.w, a_sizes2.x), r, mu, cos_az);
+    bool ground;
+    skyViewParams(p, mu, cos_az, ground);
     // Local frame: up = +y, the sun in the x-y plane.
     vec3 sun = a_sun.xyz;
     float mu_s = clamp(sun.y, -1.0, 1.0);
@@ -24,7 +25,7 @@ void main() {
     float sin_az = safeSqrt(1.0 - cos_az * cos_az);
     vec3 dir = vec3(sin_v * cos_az, mu, sin_v * sin_az);
     float nu = clamp(dot(dir, sun_local), -1.0, 1.0);
-    float len = intersectsGround(r, mu) ? distanceToGround(r, mu) : distanceToTop(r, mu);
+    float len = ground ? cameraDistanceToGround(mu) : distanceToTop(r, mu);
     RaySums s = integrateRay(r, mu, mu_s, nu, len, a_sizes2.w, 0);
     imageStore(u_output, p, vec4(s.radiance, 1.0));
 }
