@@ -11,11 +11,11 @@ namespace vista {
 
 glm::dvec3 evalBrdf(const glm::dvec3& albedo, double roughness, double f0, const glm::dvec3& n, const glm::dvec3& l,
                     const glm::dvec3& v) {
-    double nl = glm::dot(n, l);
+    double nl = std::min(glm::dot(n, l), 1.0);
     if (nl <= 0.0) return glm::dvec3(0.0);
-    double nv = std::max(glm::dot(n, v), 1e-4);
+    double nv = std::clamp(glm::dot(n, v), 1e-4, 1.0);
     glm::dvec3 h = glm::normalize(l + v);
-    double nh = std::max(glm::dot(n, h), 0.0), vh = std::max(glm::dot(v, h), 0.0);
+    double nh = std::clamp(glm::dot(n, h), 0.0, 1.0), vh = std::clamp(glm::dot(v, h), 0.0, 1.0);
     double r = std::max(roughness, kMinRoughness);
     double a2 = r * r * r * r;
     double d = nh * nh * (a2 - 1.0) + 1.0;

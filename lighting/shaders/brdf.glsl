@@ -10,11 +10,11 @@
 const float PI = 3.14159265358979;
 
 vec3 evalBrdf(vec3 albedo, float roughness, float f0, vec3 n, vec3 l, vec3 v) {
-    float nl = dot(n, l);
+    float nl = min(dot(n, l), 1.0);
     if (nl <= 0.0) return vec3(0.0);
-    float nv = max(dot(n, v), 1e-4);
+    float nv = clamp(dot(n, v), 1e-4, 1.0);  // clamped: pow(1 - x, 5) of x > 1 would be NaN
     vec3 h = safeNormalize(l + v);
-    float nh = max(dot(n, h), 0.0), vh = max(dot(v, h), 0.0);
+    float nh = clamp(dot(n, h), 0.0, 1.0), vh = clamp(dot(v, h), 0.0, 1.0);
     float r = max(roughness, 0.045);
     float a2 = r * r * r * r;
     float d = nh * nh * (a2 - 1.0) + 1.0;

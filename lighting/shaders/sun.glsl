@@ -30,7 +30,7 @@ void main() {
     vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * max(dot(s.normal, l), 0.0);
     // Ambient: Lambert on the hemisphere irradiance, and a rough specular term from the
     // irradiance around the mirror direction (Fresnel at the view angle, damped by roughness).
-    float nv = max(dot(s.normal, v), 0.0);
+    float nv = clamp(dot(s.normal, v), 0.0, 1.0);
     float fr = s.f0 + (1.0 - s.f0) * pow(1.0 - nv, 5.0) * (1.0 - s.roughness);
     vec3 r = reflect(-v, s.normal);
     color += (1.0 - fr) * s.albedo / PI * ambientIrradiance(s.normal) + fr / PI * ambientIrradiance(r);

@@ -1,0 +1,236 @@
+// Local lights under OSMesa: every culling method lights the same image as the naive loop and
+// shades every (pixel, light) pair where the light reaches (lights.exact equal to naive's, so the
+// GPU culling is conservative); overflowing lists stay conservative and are counted; extreme
+// light sets give finite images; a scene without local lights runs no light pass.
+#include "app/frame.h"
+#include "app/scene.h"
+#include "lighting/light_settings.h"
+#include "gl_fixture.h"
+#include "terrain/heightmap.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace vista;
+
+namespace {
+
+FrameRenderer& renderer() {
+    test::glContext();
+    static FrameRenderer r(vistaRoot());
+    return r;
+}
+
+// Gentle hills, 400 m square, heights 0..40 m.
+Settings hillScene() {
+    Settings s;
+    s.terrain.heightmap = "lights-test";
+    s.terrain.size_m = 400.0f;
+    s.terrain.height_scale_m = 40.0f;
+    s.terrain.height_offset_m = 0.0f;
+    s.sky.enabled = false;
+    s.sky.sun_illuminance = 0.0f;  // local lights only
+    s.debug.grid = false;
+    return s;
+}
+
+void useHills(const Settings& s) {
+    static bool adopted = false;
+    if (adopted) return;
+    Heightmap map{65, 65, std::vector<float>(65 * 65)};
+    for (int z = 0; z < 65; ++z)
+        for (int x = 0; x < 65; ++x)
+            map.samples[std::size_t(z * 65 + x)] = 0.5f + 0.3f * std::sin(float(x) * 0.2f) * std::cos(float(z) * 0.15f);
+    InputErrors errors;
+    auto terrain = Terrain::create(std::move(map), s.terrain, renderer().shaders(), errors);
+    REQUIRE(terrain);
+    renderer().adoptTerrain(std::move(terrain));
+    adopted = true;
+}
+
+void addVolume(Settings& s, const std::string& name, const std::string& spec) {
+    NamedLightVolume v{name, {}};
+    REQUIRE(parseVolumeSpec(spec, v.volume).empty());
+    s.lights.volumes.push_back(v);
+}
+void addLight(Settings& s, const std::string& name, const std::string& spec) {
+    NamedLight l{name, {}};
+    REQUIRE(parseLightSpec(spec, l.light).empty());
+    s.lights.lights.push_back(l);
+}
+
+struct Lit {
+    std::vector<float> hdr;
+    std::uint64_t evaluations = 0, exact = 0, overflow = 0, nonfinite = 0;
+    std::vector<std::string> executed;
+};
+
+Lit render(Settings s, LightCulling method, const ViewParams& view, double t = 0.0) {
+    useHills(s);
+    s.lights.culling = method;
+    FrameRenderer& r = renderer();
+    r.counters().collect(true);  // drop what earlier frames left
+    std::vector<std::uint16_t> half;
+    FrameRequest request;
+    request.capture_hdr = &half;
+    request.count_lights = true;
+    request.count_nonfinite = true;
+    FrameReport report = r.render(s, view, t, request);
+    Lit out;
+    out.executed = report.executed;
+    for (const auto& c : r.counters().collect(true)) {
+        if (c.name == "lights.evaluations") out.evaluations += c.value;
+        if (c.name == "lights.exact") out.exact += c.value;
+        if (c.name == "lights.overflow") out.overflow += c.value;
+        if (c.name == "nonfinite_pixels") out.nonfinite += c.value;
+    }
+    out.hdr.resize(half.size());
+    for (std::size_t i = 0; i < half.size(); ++i) out.hdr[i] = glm::unpackHalf1x16(half[i]);
+    return out;
+}
+
+// Largest difference over RGB relative to the brightest naive pixel.
+double maxRelativeDiff(const Lit& a, const Lit& b) {
+    double peak = 1e-6, diff = 0.0;
+    for (std::size_t i = 0; i < a.hdr.size(); ++i) {
+        if (i % 4 == 3) continue;
+        peak = std::max(peak, double(a.hdr[i]));
+        diff = std::max(diff, std::abs(double(a.hdr[i]) - double(b.hdr[i])));
+    }
+    return diff / peak;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+const ViewParams kView{{-150.0, 120.0, 150.0}, 45.0, -30.0, 60.0, 0.5, 160, 90};
+
+}  // namespace
+
+TEST_CASE("gl: tiled, clustered and hashed culling light the same image as naive and miss no light") {
+    Settings s = hillScene();
+    addVolume(s, "grid", "box -200 0 -200 200 0 200  count 12 1 12  radius 35  intensity 400  jitter 0.8  ground 3");
+    addLight(s, "spot", "spot 0 80 0  radius 150  color 1 0.9 0.7  intensity 8000  direction 0.2 -1 0.1  cone 10 25");
+    addLight(s, "tiny", "point 30 30 30  radius 0.5  intensity 10");
+    const Lit naive = render(s, LightCulling::Naive, kView);
+    REQUIRE(naive.exact > 0);
+    CHECK(naive.nonfinite == 0);
+    CHECK(naive.evaluations > naive.exact);
+    for (LightTileSize tile : {LightTileSize::Px16, LightTileSize::Px32}) {
+        s.lights.tile_size = tile;
+        for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
+            CAPTURE(int(m));
+            CAPTURE(tilePixels(tile));
+            const Lit lit = render(s, m, kView);
+            CHECK(lit.exact == naive.exact);  // conservative: every reaching pair was shaded
+            CHECK(lit.evaluations < naive.evaluations);
+            CHECK(lit.overflow == 0);
+            CHECK(lit.nonfinite == 0);
+            const double diff = maxRelativeDiff(naive, lit);
+            CAPTURE(diff);
+            CHECK(diff <= 1e-3);
+            std::printf("lights %-9s tile %2d: evaluations %8llu exact %7llu efficiency %.3f diff %.2g\n",
+                        m == LightCulling::Tiled ? "tiled" : m == LightCulling::Clustered ? "clustered" : "hashed",
+                        tilePixels(tile), (unsigned long long)lit.evaluations, (unsigned long long)lit.exact,
+                        double(lit.exact) / double(std::max<std::uint64_t>(lit.evaluations, 1)), diff);
+        }
+    }
+}
+
+TEST_CASE("gl: overflowing light lists are counted and still shade every light that reaches") {
+    Settings s = hillScene();
+    addVolume(s, "dense", "box -60 0 -60 60 0 60  count 8 1 8  radius 60  intensity 200  ground 3");
+    s.lights.max_lights_per_cell = 4;
+    const Lit naive = render(s, LightCulling::Naive, kView);
+    for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered}) {
+        CAPTURE(int(m));
+        const Lit lit = render(s, m, kView);
+        CHECK(lit.overflow > 0);
+        CHECK(lit.exact == naive.exact);
+        CHECK(maxRelativeDiff(naive, lit) <= 1e-3);
+    }
+}
+
+TEST_CASE("gl: 100,000 lights and zero-radius lights give finite images") {
+    Settings s = hillScene();
+    addVolume(s, "many", "box -200 0 -200 200 30 200  count 100 10 100  radius 4  intensity 50  jitter 1");
+    ViewParams small = kView;
+    small.width = 48;
+    small.height = 27;
+    for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered}) {
+        CAPTURE(int(m));
+        const Lit lit = render(s, m, small);
+        CHECK(lit.nonfinite == 0);
+        CHECK(lit.exact > 0);
+    }
+    Settings z = hillScene();
+    addVolume(z, "zero", "box -200 0 -200 200 0 200  count 30 1 30  radius 0  intensity 1000  ground 0");
+    for (LightCulling m : {LightCulling::Naive, LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
+        CAPTURE(int(m));
+        const Lit lit = render(z, m, small);
+        CHECK(lit.nonfinite == 0);
+        CHECK(lit.exact == 0);  // radius 0 reaches nothing
+        for (std::size_t i = 0; i < lit.hdr.size(); i += 4) CHECK_MESSAGE(lit.hdr[i] == 0.0f, i);
+    }
+}
+
+TEST_CASE("gl: a light exactly at the camera and one behind it light the ground in front") {
+    Settings s = hillScene();
+    addLight(s, "at_camera", "point -150 120 150  radius 300  intensity 20000");
+    addLight(s, "behind", "point -250 100 250  radius 400  intensity 20000");
+    const Lit naive = render(s, LightCulling::Naive, kView);
+    CHECK(naive.nonfinite == 0);
+    CHECK(naive.exact > 0);
+    for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
+        CAPTURE(int(m));
+        const Lit lit = render(s, m, kView);
+        CHECK(lit.nonfinite == 0);
+        CHECK(lit.exact == naive.exact);
+        CHECK(maxRelativeDiff(naive, lit) <= 1e-3);
+    }
+}
+
+TEST_CASE("gl: moving lights: the hashed octree updates without a rebuild and matches naive") {
+    Settings s = hillScene();
+    addVolume(s, "grid", "box -200 0 -200 200 0 200  count 10 1 10  radius 30  intensity 400  ground 3");
+    s.lights.animation.motion = LightMotion::Circle;
+    s.lights.animation.amplitude_m = 6.0f;
+    s.lights.animation.period_s = 8.0f;
+    const double times[2] = {1.0, 2.5};
+    Lit naive[2];
+    for (int i = 0; i < 2; ++i) naive[i] = render(s, LightCulling::Naive, kView, times[i]);
+    render(s, LightCulling::Hashed, kView, 0.0);  // builds the octree
+    for (int i = 0; i < 2; ++i) {
+        CAPTURE(times[i]);
+        const Lit hashed = render(s, LightCulling::Hashed, kView, times[i]);
+        REQUIRE(renderer().localLights());
+        const LightHashStats& h = renderer().localLights()->stats().hash;
+        CHECK_FALSE(h.full_rebuild);
+        CHECK(h.lights_changed > 0);
+        CHECK(hashed.exact == naive[i].exact);
+        CHECK(maxRelativeDiff(naive[i], hashed) <= 1e-3);
+    }
+}
+
+TEST_CASE("gl: a scene without local lights runs no light pass and holds no light buffers") {
+    Settings s = hillScene();
+    Lit none = render(s, LightCulling::Clustered, kView);
+    CHECK_FALSE(contains(none.executed, "lights.cull"));
+    CHECK_FALSE(contains(none.executed, "lights.shade"));
+    CHECK(renderer().localLights() == nullptr);
+    addVolume(s, "grid", "box -200 0 -200 200 0 200  count 4 1 4  radius 30  intensity 400  ground 3");
+    Lit some = render(s, LightCulling::Clustered, kView);
+    CHECK(contains(some.executed, "lights.cull"));
+    CHECK(contains(some.executed, "lights.shade"));
+    CHECK(renderer().localLights() != nullptr);
+    s.lights.enabled = false;
+    Lit off = render(s, LightCulling::Clustered, kView);
+    CHECK_FALSE(contains(off.executed, "lights.shade"));
+    CHECK(renderer().localLights() == nullptr);
+}
