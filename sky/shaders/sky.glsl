@@ -87,8 +87,10 @@ void main() {
             radiance += a_solar.xyz * t_sun * limb * norm;
         }
     }
-    // Dither: +-0.5 of an 8-bit step, relative (the tone curve is roughly logarithmic).
-    float noise = hash12(gl_FragCoord.xy + fract(u_time.y * 0.618034) * 97.0) + hash12(gl_FragCoord.yx + 13.7) - 1.0;
+    // Dither: +-0.5 of an 8-bit step, relative (the tone curve is roughly logarithmic). Seeded by
+    // the scene time, not the frame index: the same scene at the same time renders the same image
+    // whatever was drawn before it (captures, saved scenes and golden images compare frames).
+    float noise = hash12(gl_FragCoord.xy + fract(u_time.x * 0.618034) * 97.0) + hash12(gl_FragCoord.yx + 13.7) - 1.0;
     radiance *= 1.0 + noise / 255.0;
     o_color = vec4(clamp(radiance, vec3(0.0), vec3(60000.0)), 1.0);
 }
