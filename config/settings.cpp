@@ -125,7 +125,7 @@ void describe(SettingsVisitor& v, SkySettings& s) {
     v.field({"sky_view_width", "texels", "sky-view LUT size in azimuth"}, s.sky_view_width, 16, 1024);
     v.field({"sky_view_height", "texels", "sky-view LUT size in elevation"}, s.sky_view_height, 16, 1024);
     v.field({"sky_view_steps", "", "steps along each sky-view (or from-space) ray"}, s.sky_view_steps, 4, 256);
-    v.field({"rebuild_sun_deg", "deg", "sun motion that triggers a sky-view rebuild"}, s.rebuild_sun_deg, 0.0f, 10.0f);
+    v.field({"rebuild_sun_deg", "deg", "grid of sun elevations the sky-view LUT is built for (0: every change)"}, s.rebuild_sun_deg, 0.0f, 10.0f);
     v.field({"zenith_color", "", "unused by the physical sky (old scenes load)"}, s.zenith_color, 0.0f, 100.0f);
     v.field({"horizon_color", "", "unused by the physical sky (old scenes load)"}, s.horizon_color, 0.0f, 100.0f);
 }

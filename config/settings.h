@@ -129,7 +129,7 @@ struct SkySettings {
     int sky_view_width = 192;        //!< texels in azimuth, 16..1024
     int sky_view_height = 108;       //!< texels in elevation (sqrt horizon mapping), 16..1024
     int sky_view_steps = 32;         //!< steps along each view ray, 4..256 (also for views from space)
-    float rebuild_sun_deg = 0.05f;   //!< deg the sun must move before the sky-view LUT is rebuilt, 0..10
+    float rebuild_sun_deg = 0.05f;   //!< deg, grid of sun elevations the sky-view LUT is built for (0: exact), 0..10
     glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< unused by the physical sky; old scenes load
     glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< unused by the physical sky; old scenes load
 };

@@ -57,6 +57,19 @@ gl::Texture makeLut(int width, int height, GLenum format, const char* name) {
 
 double cameraAltitudeM(const RenderContext& rc) { return std::max(rc.view.position.y, 0.0); }
 
+// The sky-view LUT is built for the camera's altitude on a grid (1 m near the ground, 0.1% of
+// the altitude higher up) and the sun's elevation on a grid of rebuild_sun_deg: it is rebuilt
+// when either crosses a grid line, and a frame never depends on the frames drawn before it.
+double lutAltitudeM(double altitude_m) {
+    return 1000.0 * std::expm1(std::round(std::log1p(altitude_m / 1000.0) / 1e-3) * 1e-3);
+}
+double lutSunElevation(const glm::dvec3& sun, const SkySettings& sky) {
+    const double elevation = std::asin(std::clamp(sun.y, -1.0, 1.0));
+    const double step = glm::radians(double(sky.rebuild_sun_deg));
+    if (!(step > 0.0)) return elevation;
+    return std::clamp(std::round(elevation / step) * step, -0.5 * std::numbers::pi, 0.5 * std::numbers::pi);
+}
+
 }  // namespace
 
 // std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
@@ -105,6 +118,16 @@ void SkyAtmosphere::invalidate() {
     view_valid_ = false;
 }
 
+// The camera's radius, altitude and horizon; the horizon in double, as float loses the few metres
+// between the camera and the ground.
+void SkyAtmosphere::setCamera(Uniforms& u, const AtmosphereParams& p, double altitude_m) {
+    const double r = p.bottom_radius + altitude_m;
+    const double mu_h = -std::sqrt(altitude_m * (2.0 * p.bottom_radius + altitude_m)) / r;
+    u.radii.z = float(r * 1e-3);
+    u.radii.w = float(altitude_m * 1e-3);
+    u.horizon = glm::vec4(float(mu_h), float(std::sqrt(1.0 - mu_h * mu_h)), float(std::asin(mu_h)), 0.0f);
+}
+
 void SkyAtmosphere::upload(const Uniforms& u) {
     static_assert(sizeof(Uniforms) == 464, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
@@ -119,8 +142,7 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
 
     Uniforms u{};
     const float km = 1e-3f, per_km = 1e3f;
-    u.radii = glm::vec4(float(p.bottom_radius) * km, float(p.top_radius) * km,
-                        float(p.bottom_radius * 1e-3 + altitude_m * 1e-3), float(altitude_m) * km);
+    u.radii = glm::vec4(float(p.bottom_radius) * km, float(p.top_radius) * km, 0.0f, 0.0f);
     u.rayleigh = glm::vec4(glm::vec3(p.rayleigh_scattering) * per_km, float(p.rayleigh_scale_height) * km);
     u.mie = glm::vec4(glm::vec3(p.mie_scattering) * per_km, float(p.mie_scale_height) * km);
     u.mie_ext = glm::vec4(glm::vec3(p.mie_extinction) * per_km, float(p.mie_g));
@@ -130,12 +152,7 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
     u.albedo = glm::vec4(glm::vec3(p.ground_albedo), 0.0f);
     u.solar = glm::vec4(glm::vec3(p.solar_irradiance) * sky.sun_illuminance, sky.sun_illuminance);
     u.sun = glm::vec4(glm::vec3(sun), 0.0f);
-    {
-        // In double: float loses the few metres between the camera and the ground.
-        const double r = p.bottom_radius + altitude_m;
-        const double mu_h = -std::sqrt(altitude_m * (2.0 * p.bottom_radius + altitude_m)) / r;
-        u.horizon = glm::vec4(float(mu_h), float(std::sqrt(1.0 - mu_h * mu_h)), float(std::asin(mu_h)), 0.0f);
-    }
+    setCamera(u, p, altitude_m);
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
     u.sizes2 = {sky.sky_view_height, sky.transmittance_steps, sky.multiscatter_steps, sky.sky_view_steps};
     std::vector<double> gx, gw;
@@ -166,11 +183,13 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
         sky_view_ = makeLut(sky.sky_view_width, sky.sky_view_height, GL_RGBA16F, "sky view LUT");
         view_valid_ = false;
     }
-    const double sun_cos = glm::dot(sun, view_sun_);
-    const double altitude_tolerance = std::max(1.0, 1e-3 * altitude_m);
-    bool rebuild_view = !in_space && (!view_valid_ || view_key != view_key_ ||
-                                      sun_cos < std::cos(glm::radians(double(sky.rebuild_sun_deg))) ||
-                                      std::abs(altitude_m - view_altitude_m_) > altitude_tolerance);
+    const double lut_sun_elevation = lutSunElevation(sun, sky), lut_altitude_m = lutAltitudeM(altitude_m);
+    bool rebuild_view = !in_space && (!view_valid_ || view_key != view_key_ || lut_sun_elevation != view_sun_elevation_ ||
+                                      lut_altitude_m != view_altitude_m_);
+    // The sky-view LUT only sees the sun's elevation (its azimuth is relative to the sun's).
+    Uniforms u_view = u;
+    u_view.sun = glm::vec4(float(std::cos(lut_sun_elevation)), float(std::sin(lut_sun_elevation)), 0.0f, 0.0f);
+    setCamera(u_view, p, lut_altitude_m);
 
     TextureHandle transmittance = graph.importTexture(
         "sky.transmittance_lut", {sky.transmittance_width, sky.transmittance_height, PixelFormat::RGBA32F}, transmittance_.id());
@@ -183,15 +202,15 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
         TextureHandle out, in0, in1;
     };
     // One compute pass writing `out` from the LUTs it reads.
-    auto lutPass = [&](const char* name, const char* program, TextureHandle out, TextureHandle in0, TextureHandle in1,
-                       auto on_done) {
+    auto lutPass = [&](const char* name, const char* program, const Uniforms& pass_u, TextureHandle out,
+                       TextureHandle in0, TextureHandle in1, auto on_done) {
         const LutData& d = graph.addPass<LutData>(name,
             [&](PassBuilder& b, LutData& data) {
                 if (in0.valid()) data.in0 = b.read(in0);
                 if (in1.valid()) data.in1 = b.read(in1);
                 data.out = b.write(out);
             },
-            [this, &rc, u, program, on_done](const LutData& data, PassContext& ctx) {
+            [this, &rc, u = pass_u, program, on_done](const LutData& data, PassContext& ctx) {
                 upload(u);
                 glUseProgram(rc.shaders.get(program)->id());
                 if (data.in0.valid()) glBindTextureUnit(binding::kTex0, ctx.texture(data.in0));
@@ -206,21 +225,21 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
         return d.out;
     };
     if (rebuild_atmosphere || !atmosphere_valid_) {
-        transmittance = lutPass("sky.transmittance", "sky/shaders/transmittance_lut.glsl", transmittance, {}, {},
+        transmittance = lutPass("sky.transmittance", "sky/shaders/transmittance_lut.glsl", u, transmittance, {}, {},
                                 [this] { ++stats_.transmittance_builds; });
-        multiscatter = lutPass("sky.multiscatter", "sky/shaders/multiscatter_lut.glsl", multiscatter, transmittance, {},
+        multiscatter = lutPass("sky.multiscatter", "sky/shaders/multiscatter_lut.glsl", u, multiscatter, transmittance, {},
                                [this] {
                                    ++stats_.multiscatter_builds;
                                    atmosphere_valid_ = true;
                                });
     }
     if (rebuild_view) {
-        sky_view = lutPass("sky.view", "sky/shaders/sky_view_lut.glsl", sky_view, transmittance, multiscatter,
-                           [this, sun, altitude_m, view_key] {
+        sky_view = lutPass("sky.view", "sky/shaders/sky_view_lut.glsl", u_view, sky_view, transmittance, multiscatter,
+                           [this, lut_sun_elevation, lut_altitude_m, view_key] {
                                ++stats_.sky_view_builds;
                                view_valid_ = true;
-                               view_sun_ = sun;
-                               view_altitude_m_ = altitude_m;
+                               view_sun_elevation_ = lut_sun_elevation;
+                               view_altitude_m_ = lut_altitude_m;
                                view_key_ = view_key;
                            });
     }

@@ -50,13 +50,14 @@ public:
 
 private:
     struct Uniforms;
+    static void setCamera(Uniforms& u, const AtmosphereParams& p, double altitude_m);
     void upload(const Uniforms& u);
 
     gl::Buffer uniforms_;
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for
     std::vector<float> view_key_;        // size and steps of the sky-view LUT
-    glm::dvec3 view_sun_{0.0};           // sun and altitude the sky-view LUT was built for
+    double view_sun_elevation_ = 0.0;    // sun elevation (rad) and altitude the sky-view LUT was built for
     double view_altitude_m_ = -1.0;
     bool atmosphere_valid_ = false, view_valid_ = false;
     SkyLutStats stats_;
