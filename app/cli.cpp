@@ -2,6 +2,7 @@
 // the window loop, the capture runner or the checker.
 #include "app/cli.h"
 
+#include "app/bench_lights.h"
 #include "app/bench_sky.h"
 #include "app/bench_terrain.h"
 #include "app/camera_path.h"
@@ -14,6 +15,7 @@
 
 #include <cstdio>
 #include <map>
+#include <sstream>
 
 namespace vista {
 namespace {
@@ -171,6 +173,21 @@ int runCli(int argc, char** argv) {
     bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
 
+    SceneOptions lights_scene;
+    BenchLightsOptions lights_opts;
+    std::string lights_backend = "osmesa", lights_size, lights_json, lights_methods;
+    std::vector<int> lights_counts;
+    CLI::App* bench_lights = bench_cmd->add_subcommand("lights", "light culling methods: GPU cost, evaluations against exact pairs, memory");
+    lights_scene.add(bench_lights);
+    bench_lights->add_option("--lights", lights_counts, "light counts, e.g. 0,64,256,1024,4096,16384 (the default)")
+        ->delimiter(',')->check(CLI::Range(0, 1000000));
+    bench_lights->add_option("--methods", lights_methods, "comma-separated: naive,tiled,clustered,hashed (default: all)");
+    bench_lights->add_option("--size", lights_size, "frame size WxH (default 320x180)");
+    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after one warm-up")->check(CLI::Range(1, 1000));
+    bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(CLI::Range(0.0f, 1.0e4f));
+    bench_lights->add_option("--backend", lights_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_lights->add_option("--json", lights_json, "also write the results as JSON");
+
     SceneOptions sky_scene;
     BenchSkyOptions sky_opts;
     std::string sky_backend = "osmesa", sky_size, sky_json;
@@ -210,6 +227,35 @@ int runCli(int argc, char** argv) {
         terrain_opts.json = terrain_json;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchTerrain(s, terrain_opts);
+    }
+    if (*bench_lights) {
+        Settings s;
+        if (!lights_scene.load(s)) return 2;
+        if (!lights_size.empty() && (std::sscanf(lights_size.c_str(), "%dx%d", &lights_opts.width, &lights_opts.height) != 2 ||
+                                     lights_opts.width < 1 || lights_opts.height < 1 || lights_opts.width > 16384 ||
+                                     lights_opts.height > 16384)) {
+            std::fprintf(stderr, "vista: --size %s: accepted WxH, each 1..16384\n", lights_size.c_str());
+            return 2;
+        }
+        if (!lights_counts.empty()) lights_opts.lights = lights_counts;
+        if (!lights_methods.empty()) {
+            lights_opts.methods.clear();
+            std::stringstream list(lights_methods);
+            for (std::string name; std::getline(list, name, ',');) {
+                const std::map<std::string, LightCulling> names = {{"naive", LightCulling::Naive}, {"tiled", LightCulling::Tiled},
+                                                                   {"clustered", LightCulling::Clustered}, {"hashed", LightCulling::Hashed}};
+                auto it = names.find(name);
+                if (it == names.end()) {
+                    std::fprintf(stderr, "vista: --methods: '%s' is not a method; accepted naive, tiled, clustered, hashed\n",
+                                 name.c_str());
+                    return 2;
+                }
+                lights_opts.methods.push_back(it->second);
+            }
+        }
+        lights_opts.json = lights_json;
+        lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchLights(s, lights_opts);
     }
     if (*bench_sky) {
         Settings s;

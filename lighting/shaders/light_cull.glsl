@@ -7,7 +7,8 @@
 //      and images, do not depend on thread timing).
 //   3. Tiled: the list goes to the tile's fixed slot of max_lights_per_cell entries.
 //      Clustered: for each occupied slice (one thread each), the tile's lights that touch the
-//      cluster's box go to a slot taken from a shared pool (atomic counter).
+//      box around the cluster's pixels (the tile's frustum between the least and the greatest
+//      depth of its pixels in that slice) go to a slot taken from a shared pool (atomic counter).
 // A list longer than max_lights_per_cell (or than the pool) is not cut: the cell is marked
 // kOverflowCount, which shading reads as "every light" (conservative), and the overflow counter
 // is raised. Unoccupied clusters get empty lists.
@@ -30,6 +31,7 @@ shared uint s_mask[8];                 // hits of the current 256 lights
 shared uint s_count;                   // tile list length (may exceed the capacity)
 #ifdef LIGHTS_CLUSTERED
 shared uint s_list[kSharedCap];
+shared uint s_slice_min[256], s_slice_max[256];  // float bits of each slice's pixel depths
 #endif
 
 // The tile frustum's side planes in view space (camera looking along -z): inward normals.
@@ -48,6 +50,10 @@ void main() {
         s_count = 0u;
     }
     if (t < 8u) s_slices[t] = 0u;
+#ifdef LIGHTS_CLUSTERED
+    s_slice_min[t] = floatBitsToUint(3.0e38);
+    s_slice_max[t] = 0u;
+#endif
     barrier();
 
     // 1. Depth range (and occupied slices) of the tile's pixels; each thread takes
@@ -65,6 +71,8 @@ void main() {
 #ifdef LIGHTS_CLUSTERED
         uint k = sliceOf(z);
         atomicOr(s_slices[k >> 5], 1u << (k & 31u));
+        atomicMin(s_slice_min[k], floatBitsToUint(z));
+        atomicMax(s_slice_max[k], floatBitsToUint(z));
 #endif
     }
     barrier();
@@ -140,11 +148,10 @@ void main() {
         atomicAdd(u_overflow, 1u);
         return;
     }
-    // Slice depths, cut to the tile's pixels: near_k = near_0 * ratio^k (slice 0 from 0, the last to infinity).
-    float dn = k == 0u ? 0.0 : u_slices.x * exp(float(k) * u_slices.z);
-    float df = k + 1u >= slices ? 3.0e38 : u_slices.x * exp(float(k + 1u) * u_slices.z);
-    dn = max(dn * (1.0 - 1e-4), zmin);
-    df = min(df * (1.0 + 1e-4), zmax);
+    // The depth range of the tile's pixels in this slice (within the slice's bounds
+    // near_k = near_0 * ratio^k by construction), widened against rounding.
+    float dn = uintBitsToFloat(s_slice_min[k]) * (1.0 - 1e-4);
+    float df = uintBitsToFloat(s_slice_max[k]) * (1.0 + 1e-4);
     vec3 box_min = vec3(min(slopes.x * dn, slopes.x * df), min(slopes.z * dn, slopes.z * df), -df);
     vec3 box_max = vec3(max(slopes.y * dn, slopes.y * df), max(slopes.w * dn, slopes.w * df), -dn);
     uint count = 0u;
