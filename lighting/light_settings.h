@@ -62,7 +62,7 @@ struct LightsSettings {
     int cluster_slices = 0;         //!< depth slices, 0..256; 0 = 002's cubic clusters (ratio 1 + 2 tan(fov/2) / tiles_y), at most kMaxAutoSlices
     float cluster_near_m = 0.0f;    //!< m, near_0 of near_k = near_0 * ratio^k, 0..1e4; 0 = the camera's near plane
     float cluster_far_m = 4000.0f;  //!< m, depth the bounded slices reach; the last slice also takes all beyond, 1..1e7
-    int max_lights_per_cell = 256;  //!< list capacity per tile or cluster, 1..65536; overflow is counted and warned
+    int max_lights_per_cell = 1024; //!< list capacity per tile or cluster, 1..4096; overflow is counted and warned
     float hash_node_m = 0.0f;       //!< m, leaf node size of the hashed light octree, 0..1e5; 0 = half the mean light radius
     float hash_memory_mb = 256.0f;  //!< MiB of GPU tables + index list, 1..65536; beyond it the node size doubles until it fits
     float hash_slack = 0.25f;       //!< extra hash-table room kept for incremental updates, fraction 0..4

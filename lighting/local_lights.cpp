@@ -98,7 +98,7 @@ void LocalLights::GpuBuffer::upload(const void* data, std::size_t bytes, std::st
 LocalLights::LocalLights() {
     for (gl::Buffer& b : overflow_ring_) {
         const std::uint32_t zero[2] = {0, 0};
-        b = gl::Buffer::create(sizeof(zero), zero, GL_DYNAMIC_STORAGE_BIT, "lights.overflow");
+        b = gl::Buffer::create(sizeof(zero), zero, GL_DYNAMIC_STORAGE_BIT, "lights.overflow");  // overflow, pool demand
     }
 }
 
@@ -115,13 +115,15 @@ void LocalLights::readOverflow() {
     if (glClientWaitSync(fence, 0, 0) == GL_TIMEOUT_EXPIRED) return;
     glDeleteSync(fence);
     fence = nullptr;
-    std::uint32_t value = 0;
-    glGetNamedBufferSubData(overflow_ring_[slot].id(), 0, sizeof(value), &value);
+    std::uint32_t values[2] = {0, 0};  // overflowed cells, pool entries asked for
+    glGetNamedBufferSubData(overflow_ring_[slot].id(), 0, sizeof(values), values);
+    const std::uint32_t value = values[0];
+    pool_demand_ = values[1];
     stats_.overflow = value;
     if (value > 0 && !overflow_warned_)
         std::fprintf(stderr,
                      "vista: lights: %u tile/cluster light lists overflowed [lights] max_lights_per_cell = %d; "
-                     "those cells shade every light (correct, slower). Raise max_lights_per_cell (1..65536) or "
+                     "those cells shade every light (correct, slower). Raise max_lights_per_cell (1..4096) or "
                      "lower the light radii.\n",
                      value, settings_.max_lights_per_cell);
     overflow_warned_ = value > 0;
@@ -221,10 +223,17 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         stats_.tiles_y = grid_.tiles_y;
         stats_.slices = slices;
         const std::size_t tiles = std::size_t(grid_.tiles_x) * std::size_t(grid_.tiles_y);
-        const std::size_t cap = std::size_t(s.max_lights_per_cell);
-        const std::size_t entries = clustered ? std::min<std::size_t>(2 * tiles * cap, std::size_t(1) << 26) : tiles * cap;
+        const std::size_t cap = std::size_t(std::min(s.max_lights_per_cell, kMaxLightsPerCell));
+        // The list pool: 64 entries per tile to start, then grown to 1.5x what the last frames
+        // asked for (read back a few frames late; meanwhile lists that do not fit overflow,
+        // which stays correct). It never shrinks while the lights stay.
+        std::size_t entries = std::max<std::size_t>(pool_entries_, tiles * 64);
+        if (pool_demand_ * 5 > entries * 4) entries = std::size_t(pool_demand_) * 3 / 2;
+        entries = std::min<std::size_t>(entries, std::size_t(1) << 26);
+        pool_entries_ = entries;
         cells_buf_.reserve(tiles * std::size_t(slices) * 8, "lights.cells");
         indices_buf_.reserve(entries * 4, "lights.indices");
+        pool_buf_.reserve(4, "lights.pool");
         u.grid = glm::uvec4(std::uint32_t(n), std::uint32_t(grid_.tile_px), std::uint32_t(grid_.tiles_x),
                             std::uint32_t(grid_.tiles_y));
         u.grid2 = glm::uvec4(std::uint32_t(slices), std::uint32_t(cap), std::uint32_t(entries), 0u);
@@ -238,11 +247,12 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
                                    float(-glm::dot(rel, m.forward)), float(world_spheres_[i].radius));
         }
         spheres_buf_.upload(spheres.data(), n * sizeof(glm::vec4), "lights.spheres");
-        if (clustered) pool_buf_.reserve(4, "lights.pool");
     } else {
         cells_buf_ = {};
         spheres_buf_ = {};
         pool_buf_ = {};
+        pool_entries_ = 0;
+        pool_demand_ = 0;
         if (stats_.method == LightCulling::Naive) indices_buf_ = {};
     }
     if (stats_.method == LightCulling::Hashed) {
@@ -318,18 +328,18 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 }
                 const std::uint32_t zero = 0;
                 glClearNamedBufferData(overflow, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-                if (pool_buf_.buffer.id())
-                    glClearNamedBufferData(pool_buf_.buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+                glClearNamedBufferData(pool_buf_.buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
                 glUseProgram(rc.shaders.get("lighting/shaders/light_cull.glsl", {methodDefine(method)})->id());
                 bindBuffers();
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, overflow);
-                if (pool_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());
                 glBindTextureUnit(binding::kTex0, ctx.texture(d.depth));
                 glDispatchCompute(GLuint(grid_.tiles_x), GLuint(grid_.tiles_y), 1);
                 glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
                 // For the stats: a copy of the overflow count per frame; for the warning: the ring.
                 GLuint stat = counters.request(rc.frame, "lights.overflow");
                 glCopyNamedBufferSubData(overflow, stat, 0, 0, 4);
+                glCopyNamedBufferSubData(pool_buf_.buffer.id(), overflow, 0, 4, 4);  // the pool's demand
                 overflow_fence_[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
             });
     }

@@ -17,9 +17,8 @@
 //   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
 //   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
 //             tiles_x (tile.y + tiles_y slice)); count 0xFFFFFFFF = overflow, shade every light.
-//   indices   tiled: max_lights_per_cell entries per tile; clustered: a pool of
-//             2 * tiles * max_lights_per_cell entries filled by an atomic counter; hashed:
-//             LightHash::indices().
+//   indices   tiled, clustered: a pool of lists filled by an atomic counter, sized from the
+//             demand read back (64 entries per tile to start); hashed: LightHash::indices().
 //   hash      for each level l in 0..20, 16 words: node table l (values base, offsets base, mbar,
 //             rbar^3, Q, 0, 0, 0) and data table l (the same); then the tables: node values one
 //             word per slot, data values two words (offset, count), offsets one word per entry.
@@ -48,6 +47,9 @@ using GroundHeight = std::function<double(double x_m, double z_m)>;
 // The lights of [lights]: explicit entries, then each volume's; volumes with `ground` put their
 // lights that high above ground(x, z) (above the box's lower y without a ground function).
 std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground);
+
+// Longest list a tile or cluster keeps (the culling pass's shared-memory list).
+inline constexpr int kMaxLightsPerCell = 4096;
 
 // Lights the settings describe (explicit entries, then volumes), before animation. 0 when
 // [lights] is disabled.
@@ -111,6 +113,8 @@ private:
     GpuBuffer lights_buf_, spheres_buf_, cells_buf_, indices_buf_, hash_buf_, grid_ubo_, pool_buf_;
     std::array<gl::Buffer, 3> overflow_ring_;
     std::array<GLsync, 3> overflow_fence_{};
+    std::size_t pool_entries_ = 0;    // list pool capacity (tiled, clustered)
+    std::uint32_t pool_demand_ = 0;   // entries the pool was asked for, as last read back
     std::size_t write_slot_ = 0;  // overflow ring slot the next cull pass writes
     bool overflow_warned_ = false;
     LocalLightStats stats_;

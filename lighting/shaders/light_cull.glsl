@@ -5,13 +5,15 @@
 //   2. Every light's bounding sphere (view space) against the tile's frustum, four side planes
 //      and the depth range, 256 lights at a time; hits are compacted in light order (so lists,
 //      and images, do not depend on thread timing).
-//   3. Tiled: the list goes to the tile's fixed slot of max_lights_per_cell entries.
+//   3. Tiled: the tile's list goes to a slot taken from a pool (atomic counter).
 //      Clustered: for each occupied slice (one thread each), the tile's lights that touch the
 //      box around the cluster's pixels (the tile's frustum between the least and the greatest
-//      depth of its pixels in that slice) go to a slot taken from a shared pool (atomic counter).
-// A list longer than max_lights_per_cell (or than the pool) is not cut: the cell is marked
-// kOverflowCount, which shading reads as "every light" (conservative), and the overflow counter
-// is raised. Unoccupied clusters get empty lists.
+//      depth of its pixels in that slice) go to a slot taken from the pool.
+// A list longer than max_lights_per_cell (at most kSharedCap), or one the pool has no room for,
+// is not cut: the cell is marked kOverflowCount, which shading reads as "every light"
+// (conservative), and the overflow counter is raised. The pool counter also records the demand
+// of lists that did not fit, so the CPU can grow the pool (LocalLights). Unoccupied clusters get
+// empty lists.
 #ifdef COMPUTE_SHADER
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
@@ -24,13 +26,14 @@ layout(std430, binding = BINDING_LIGHT_SPHERES) readonly buffer Spheres { vec4 u
 layout(std430, binding = BINDING_COUNTERS) buffer Overflow { uint u_overflow; };
 layout(std430, binding = BINDING_AUX) buffer Pool { uint u_pool_used; };
 
-const uint kSharedCap = 2048u;  // tile list capacity in shared memory (clustered)
+const uint kSharedCap = 4096u;  // tile list capacity in shared memory (16 KiB)
 shared uint s_depth_min, s_depth_max;  // float bits of view depths (positive: ordered as uints)
 shared uint s_slices[8];               // occupied slices (clustered)
 shared uint s_mask[8];                 // hits of the current 256 lights
 shared uint s_count;                   // tile list length (may exceed the capacity)
-#ifdef LIGHTS_CLUSTERED
 shared uint s_list[kSharedCap];
+shared uint s_offset;                  // the tile list's slot in the pool (tiled)
+#ifdef LIGHTS_CLUSTERED
 shared uint s_slice_min[256], s_slice_max[256];  // float bits of each slice's pixel depths
 #endif
 
@@ -89,11 +92,7 @@ void main() {
 
     // 2. Lights against the tile, compacted in light order.
     uint light_count = empty ? 0u : u_grid.x;
-    uint cell_cap = u_grid2.y;
-#ifdef LIGHTS_TILED
-    uint cell = tile.x + u_grid.z * tile.y;
-    uint base_out = cell * cell_cap;
-#endif
+    uint cell_cap = min(u_grid2.y, kSharedCap);
     for (uint base = 0u; base < light_count; base += 256u) {
         if (t < 8u) s_mask[t] = 0u;
         barrier();
@@ -111,11 +110,7 @@ void main() {
         if (hit) {
             uint pos = s_count + bitCount(s_mask[t >> 5] & ((1u << (t & 31u)) - 1u));
             for (uint w = 0u; w < (t >> 5); ++w) pos += bitCount(s_mask[w]);
-#ifdef LIGHTS_TILED
-            if (pos < cell_cap) u_light_indices[base_out + pos] = i;
-#else
             if (pos < kSharedCap) s_list[pos] = i;
-#endif
         }
         barrier();
         if (t == 0u) {
@@ -127,11 +122,21 @@ void main() {
     }
 
 #ifdef LIGHTS_TILED
+    // 3. The tile's list into the pool, copied by all threads.
+    uint cell = tile.x + u_grid.z * tile.y;
     if (t == 0u) {
         bool overflow = s_count > cell_cap;
-        u_light_cells[cell] = uvec2(base_out, overflow ? kOverflowCount : s_count);
-        if (overflow) atomicAdd(u_overflow, 1u);
+        s_offset = overflow || s_count == 0u ? 0u : atomicAdd(u_pool_used, s_count);
+        overflow = overflow || s_offset + s_count > u_grid2.z;
+        u_light_cells[cell] = uvec2(s_offset, overflow ? kOverflowCount : s_count);
+        if (overflow) {
+            atomicAdd(u_overflow, 1u);
+            s_offset = kOverflowCount;
+        }
     }
+    barrier();
+    if (s_offset != kOverflowCount)
+        for (uint j = t; j < s_count; j += 256u) u_light_indices[s_offset + j] = s_list[j];
 #else
     // 3. One thread per slice: the tile's lights that touch the cluster's view-space box.
     uint slices = u_grid2.x;
@@ -164,7 +169,7 @@ void main() {
     uint offset = 0u;
     bool overflow = count > cell_cap;
     if (!overflow && count > 0u) {
-        offset = atomicAdd(u_pool_used, count);
+        offset = atomicAdd(u_pool_used, count);  // may pass the capacity: the demand is read back
         overflow = offset + count > u_grid2.z;
     }
     if (overflow) {
