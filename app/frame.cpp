@@ -31,8 +31,10 @@ std::vector<ProgramKey> allPrograms() {
         programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
         programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
     }
-    for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"})
+    for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"}) {
         programs.push_back({"lighting/shaders/light_cull.glsl", {method}});
+        programs.push_back({"lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
+    }
     for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
@@ -194,6 +196,7 @@ void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& 
     LightPassOptions options;
     options.count = request.count_lights;
     options.heat = s.debug.view == DebugView::Lights;
+    options.forward = request.forward_lights;
     local_lights_->addPasses(graph, rc, scene, counters_, options);
     const LocalLightStats& st = local_lights_->stats();
     report.counters["lights.count"] = double(st.count);

@@ -38,6 +38,7 @@ struct FrameRequest {
     std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear), top row first
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
+    bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
 };
 

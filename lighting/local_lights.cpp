@@ -296,16 +296,22 @@ void LocalLights::uploadHash() {
     hash_uploaded_ = true;
 }
 
+const char* LocalLights::define() const { return methodDefine(stats_.method); }
+
+void LocalLights::bindForForward() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kLightGrid, grid_ubo_.buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLights, lights_buf_.buffer.id());
+    if (cells_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCells, cells_buf_.buffer.id());
+    if (indices_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndices, indices_buf_.buffer.id());
+    if (hash_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightHash, hash_buf_.buffer.id());
+}
+
 void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets,
                             CounterReadback& counters, const LightPassOptions& options) {
     const LightCulling method = stats_.method;
     const bool culled = method == LightCulling::Tiled || method == LightCulling::Clustered;
     auto bindBuffers = [this]() {
-        glBindBufferBase(GL_UNIFORM_BUFFER, binding::kLightGrid, grid_ubo_.buffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLights, lights_buf_.buffer.id());
-        if (cells_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCells, cells_buf_.buffer.id());
-        if (indices_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightIndices, indices_buf_.buffer.id());
-        if (hash_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightHash, hash_buf_.buffer.id());
+        bindForForward();
         if (spheres_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSpheres, spheres_buf_.buffer.id());
     };
 
@@ -318,7 +324,7 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 d.depth = b.read(targets.depth);
                 b.sideEffect();  // writes the light lists lights.shade reads
             },
-            [this, &rc, &counters, method, bindBuffers](const Data& d, PassContext& ctx) {
+            [this, &rc, &counters, method, bindBuffers, forward = options.forward](const Data& d, PassContext& ctx) {
                 const std::size_t slot = write_slot_;
                 write_slot_ = (write_slot_ + 1) % overflow_ring_.size();
                 GLuint overflow = overflow_ring_[slot].id();
@@ -329,7 +335,9 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 const std::uint32_t zero = 0;
                 glClearNamedBufferData(overflow, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
                 glClearNamedBufferData(pool_buf_.buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-                glUseProgram(rc.shaders.get("lighting/shaders/light_cull.glsl", {methodDefine(method)})->id());
+                std::vector<std::string> defines = {methodDefine(method)};
+                if (forward) defines.push_back("LIGHTS_FORWARD");
+                glUseProgram(rc.shaders.get("lighting/shaders/light_cull.glsl", defines)->id());
                 bindBuffers();
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, overflow);
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());

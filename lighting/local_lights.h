@@ -71,6 +71,7 @@ struct LocalLightStats {
 struct LightPassOptions {
     bool count = false;  // lights.evaluations and lights.exact counters
     bool heat = false;   // targets.light_heat for the lights debug view
+    bool forward = false;  // lists also cover transparent depths (a forward pass follows)
 };
 
 class LocalLights {
@@ -89,6 +90,12 @@ public:
     void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
                    const LightPassOptions& options);
     const LocalLightStats& stats() const { return stats_; }
+    // Forward passes (transparent surfaces) drawn after this frame's lights.cull: compile with
+    // the define (LIGHTS_NAIVE, _TILED, _CLUSTERED or _HASHED), include
+    // lighting/shaders/lights.glsl and call forwardLocalLights(); bind the buffers first. With
+    // tiled or clustered culling the frame must have asked for LightPassOptions::forward.
+    const char* define() const;
+    void bindForForward() const;
     std::span<const Light> lights() const { return animated_; }  // this frame's, world space
 
 private:

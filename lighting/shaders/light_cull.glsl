@@ -13,7 +13,8 @@
 // is not cut: the cell is marked kOverflowCount, which shading reads as "every light"
 // (conservative), and the overflow counter is raised. The pool counter also records the demand
 // of lists that did not fit, so the CPU can grow the pool (LocalLights). Unoccupied clusters get
-// empty lists.
+// empty lists. LIGHTS_FORWARD builds lists that also cover every depth in front of the opaque
+// surface (and every depth where the tile sees the sky), for forward-shaded transparent surfaces.
 #ifdef COMPUTE_SHADER
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
@@ -28,6 +29,7 @@ layout(std430, binding = BINDING_AUX) buffer Pool { uint u_pool_used; };
 
 const uint kSharedCap = 4096u;  // tile list capacity in shared memory (16 KiB)
 shared uint s_depth_min, s_depth_max;  // float bits of view depths (positive: ordered as uints)
+shared bool s_sky;                     // a pixel of the tile sees the sky (depth 0)
 shared uint s_slices[8];               // occupied slices (clustered)
 shared uint s_mask[8];                 // hits of the current 256 lights
 shared uint s_count;                   // tile list length (may exceed the capacity)
@@ -51,6 +53,7 @@ void main() {
         s_depth_min = floatBitsToUint(3.0e38);
         s_depth_max = 0u;
         s_count = 0u;
+        s_sky = false;
     }
     if (t < 8u) s_slices[t] = 0u;
 #ifdef LIGHTS_CLUSTERED
@@ -67,7 +70,10 @@ void main() {
         ivec2 p = ivec2(tile * tile_px + gl_LocalInvocationID.xy * per + uvec2(j % per, j / per));
         if (any(greaterThanEqual(p, size))) continue;
         float depth = texelFetch(u_depth, p, 0).r;
-        if (depth <= 0.0) continue;
+        if (depth <= 0.0) {
+            s_sky = true;
+            continue;
+        }
         float z = linearDepth(depth);
         atomicMin(s_depth_min, floatBitsToUint(z));
         atomicMax(s_depth_max, floatBitsToUint(z));
@@ -81,6 +87,14 @@ void main() {
     barrier();
     float zmin = uintBitsToFloat(s_depth_min) * (1.0 - 1e-4), zmax = uintBitsToFloat(s_depth_max) * (1.0 + 1e-4);
     bool empty = s_depth_max == 0u;
+#ifdef LIGHTS_FORWARD
+    // Lists for forward-shaded (transparent) surfaces too: they may lie anywhere in front of
+    // the opaque depth, or at any depth where the tile sees the sky.
+    const float kFar = 1.0e30;  // "infinity" that keeps 0 * far finite
+    zmin = 0.0;
+    if (s_sky || empty) zmax = kFar;
+    empty = false;
+#endif
 
     // The tile's edges as view-space slopes x / depth, y / depth (lighting/cluster_grid.h).
     vec2 inv = u_viewport.zw * 2.0;
@@ -143,7 +157,12 @@ void main() {
     uint k = t;
     if (k >= slices) return;
     uint cell = tile.x + u_grid.z * (tile.y + u_grid.w * k);
+#ifdef LIGHTS_FORWARD
+    float slice_near = k == 0u ? 0.0 : u_slices.x * exp(float(k) * u_slices.z);
+    bool occupied = slice_near <= zmax;
+#else
     bool occupied = ((s_slices[k >> 5] >> (k & 31u)) & 1u) != 0u;
+#endif
     if (!occupied || empty) {
         u_light_cells[cell] = uvec2(0u, 0u);
         return;
@@ -155,8 +174,14 @@ void main() {
     }
     // The depth range of the tile's pixels in this slice (within the slice's bounds
     // near_k = near_0 * ratio^k by construction), widened against rounding.
+#ifdef LIGHTS_FORWARD
+    // Forward: the whole slice in front of the tile's farthest opaque pixel.
+    float dn = slice_near * (1.0 - 1e-4);
+    float df = min(k + 1u >= slices ? kFar : u_slices.x * exp(float(k + 1u) * u_slices.z) * (1.0 + 1e-4), zmax);
+#else
     float dn = uintBitsToFloat(s_slice_min[k]) * (1.0 - 1e-4);
     float df = uintBitsToFloat(s_slice_max[k]) * (1.0 + 1e-4);
+#endif
     vec3 box_min = vec3(min(slopes.x * dn, slopes.x * df), min(slopes.z * dn, slopes.z * df), -df);
     vec3 box_max = vec3(max(slopes.y * dn, slopes.y * df), max(slopes.w * dn, slopes.w * df), -dn);
     uint count = 0u;

@@ -117,3 +117,28 @@ vec3 shadeLocalLight(LocalLight light, Surface s, vec3 position, vec3 v, out boo
     return evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * light.color_scale.rgb *
            (attenuation * max(dot(s.normal, l), 0.0));
 }
+
+#if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
+// Forward shading (transparent surfaces, drawn after lights.cull with LocalLights::bindForForward):
+// the local light a surface at a camera-relative position reflects toward the eye, through the
+// same lists the deferred pass uses. `evaluated` and `exact` count lights shaded and reaching.
+vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, out uint evaluated, out uint exact) {
+    vec3 v = safeNormalize(-position);
+#if defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED)
+    LightRange range = lightRange(pixel, max(-(mat3(u_view) * position).z, 0.0));
+#elif defined(LIGHTS_HASHED)
+    LightRange range = lightRange(pixel, position);
+#else
+    LightRange range = LightRange(0u, u_grid.x, true);
+#endif
+    vec3 color = vec3(0.0);
+    exact = 0u;
+    for (uint i = 0u; i < range.count; ++i) {
+        bool reaches;
+        color += shadeLocalLight(u_lights[lightAt(range, i)], s, position, v, reaches);
+        exact += reaches ? 1u : 0u;
+    }
+    evaluated = range.count;
+    return color;
+}
+#endif

@@ -11,6 +11,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -233,4 +234,55 @@ TEST_CASE("gl: a scene without local lights runs no light pass and holds no ligh
     Lit off = render(s, LightCulling::Clustered, kView);
     CHECK_FALSE(contains(off.executed, "lights.shade"));
     CHECK(renderer().localLights() == nullptr);
+}
+
+TEST_CASE("gl: forward light lists cover transparent surfaces in front of the opaque ones") {
+    Settings s = hillScene();
+    addVolume(s, "near", "box -250 60 50 -50 180 250  count 6 3 6  radius 30  intensity 400");
+    useHills(s);
+    FrameRenderer& r = renderer();
+    const int w = kView.width, h = kView.height;
+    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "forward probe");
+    gl::Framebuffer fb = gl::createFramebuffer("forward probe");
+    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    gl::VertexArray vao = gl::createVertexArray("forward probe");
+    auto probe = [&](LightCulling method, bool forward) {
+        s.lights.culling = method;
+        FrameRequest request;
+        std::vector<unsigned char> ldr;
+        request.capture_ldr = &ldr;
+        request.forward_lights = forward;
+        r.render(s, kView, 0.0, request);
+        REQUIRE(r.localLights());
+        auto* program = r.shaders().get("tests/gl/shaders/forward_probe.glsl", {r.localLights()->define()});
+        REQUIRE(program);
+        r.localLights()->bindForForward();
+        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+        glViewport(0, 0, w, h);
+        glUseProgram(program->id());
+        glBindVertexArray(vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
+        glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        double missed = 0, reaching = 0, evaluated = 0;
+        for (std::size_t i = 0; i < texels.size(); i += 4) {
+            missed += texels[i];
+            reaching += texels[i + 1];
+            evaluated += texels[i + 2];
+        }
+        std::printf("forward probe method %d forward %d: reaching %.0f evaluated %.0f missed %.0f\n", int(method),
+                    int(forward), reaching, evaluated, missed);
+        return std::array<double, 3>{missed, reaching, evaluated};
+    };
+    for (LightCulling m : {LightCulling::Naive, LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
+        CAPTURE(int(m));
+        auto [missed, reaching, evaluated] = probe(m, true);
+        CHECK(reaching > 0);
+        CHECK(missed == 0);
+        if (m != LightCulling::Naive) CHECK(evaluated < double(kView.width * kView.height) * 108.0);
+    }
+    // Without the forward flag the clustered lists only cover the opaque pixels' clusters: the
+    // probe sees the difference (the check above is not vacuous).
+    CHECK(probe(LightCulling::Clustered, false)[0] > 0);
 }
