@@ -27,6 +27,7 @@ std::vector<ProgramKey> allPrograms() {
     };
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO"}});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
         programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});

@@ -25,19 +25,23 @@ std::vector<std::string> lightingPrograms() {
 
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets) {
     struct Data {
-        TextureHandle depth, albedo, normal, hdr;
+        TextureHandle depth, albedo, normal, ao, hdr;
     };
     const Data& d = graph.addPass<Data>("lighting.sun",
         [&](PassBuilder& b, Data& data) {
             data.depth = b.read(targets.depth);
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
+            if (targets.ao.valid()) data.ao = b.read(targets.ao);
             data.hdr = b.write(targets.hdr);
         },
         [&rc, light](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl")->id());
+            const std::vector<std::string> defines = data.ao.valid() ? std::vector<std::string>{"HAS_AO"}
+                                                                     : std::vector<std::string>{};
+            glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl", defines)->id());
+            if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
             glUniform3fv(0, 1, &light.sun_irradiance.x);
             glUniform3fv(1, 1, &light.sky_up.x);
             glUniform3fv(2, 1, &light.ground_up.x);

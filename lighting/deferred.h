@@ -30,7 +30,8 @@ SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings);
 // Every program the lighting uses (for FrameRenderer::allPrograms()).
 std::vector<std::string> lightingPrograms();
 
-// Needs targets.albedo, .normal and .depth; writes (adds to) targets.hdr.
+// Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO);
+// writes (adds to) targets.hdr.
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets);
 
 }  // namespace vista

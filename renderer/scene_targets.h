@@ -23,6 +23,7 @@ struct SceneTargets {
     TextureHandle albedo;  // G-buffer (above); invalid when nothing opaque is drawn
     TextureHandle normal;
     TextureHandle light_heat;  // R32F local lights evaluated per pixel; only for [debug] view = lights
+    TextureHandle ao;          // ambient occlusion in r, [0, 1] (1 = open); invalid: none (lighting.sun multiplies its ambient by it)
 };
 
 }  // namespace vista

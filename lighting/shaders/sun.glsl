@@ -12,6 +12,9 @@ layout(binding = BINDING_TEX_2) uniform sampler2D u_normal;
 layout(location = 0) uniform vec3 u_sun_irradiance;  // RGB irradiance of the sun at normal incidence
 layout(location = 1) uniform vec3 u_sky_up;          // RGB sky irradiance on an upward-facing surface
 layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from below (ground bounce) on a downward-facing surface
+#ifdef HAS_AO
+layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r), 1 = open
+#endif
 layout(location = 0) out vec4 o_color;
 
 // Hemisphere ambient: irradiance on a surface facing n.
@@ -33,7 +36,11 @@ void main() {
     float nv = clamp(dot(s.normal, v), 0.0, 1.0);
     float fr = s.f0 + (1.0 - s.f0) * pow(1.0 - nv, 5.0) * (1.0 - s.roughness);
     vec3 r = reflect(-v, s.normal);
-    color += (1.0 - fr) * s.albedo / PI * ambientIrradiance(s.normal) + fr / PI * ambientIrradiance(r);
+    float ao = 1.0;
+#ifdef HAS_AO
+    ao = texelFetch(u_ao, p, 0).r;
+#endif
+    color += ao * ((1.0 - fr) * s.albedo / PI * ambientIrradiance(s.normal) + fr / PI * ambientIrradiance(r));
     o_color = vec4(color, 0.0);
 }
 #endif
