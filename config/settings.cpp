@@ -126,6 +126,15 @@ void describe(SettingsVisitor& v, SkySettings& s) {
     v.field({"sky_view_height", "texels", "sky-view LUT size in elevation"}, s.sky_view_height, 16, 1024);
     v.field({"sky_view_steps", "", "steps along each sky-view (or from-space) ray"}, s.sky_view_steps, 4, 256);
     v.field({"rebuild_sun_deg", "deg", "grid of sun elevations the sky-view LUT is built for (0: every change)"}, s.rebuild_sun_deg, 0.0f, 10.0f);
+    v.field({"aerial_perspective", "", "haze and extinction on geometry (froxel volume)"}, s.aerial_perspective);
+    v.field({"aerial_distance_km", "km", "depth the aerial-perspective volume reaches"}, s.aerial_distance_km, 1.0f, 1000.0f);
+    v.field({"aerial_size", "froxels", "aerial-perspective volume size per screen side"}, s.aerial_size, 8, 256);
+    v.field({"aerial_slices", "", "aerial-perspective depth slices (quadratic in depth)"}, s.aerial_slices, 4, 256);
+    v.field({"aerial_steps", "", "integration steps per aerial-perspective slice"}, s.aerial_steps, 1, 16);
+    v.field({"height_fog", "", "add an exponential height fog to the aerial perspective and sky"}, s.height_fog);
+    v.field({"fog_density_per_km", "1/km", "fog extinction at fog_base_m (visibility = 3.9 / value)"}, s.fog_density_per_km, 0.0f, 1000.0f);
+    v.field({"fog_base_m", "m", "altitude where the fog has fog_density_per_km"}, s.fog_base_m, -10000.0f, 100000.0f);
+    v.field({"fog_falloff_m", "m", "height over which the fog density falls by e"}, s.fog_falloff_m, 1.0f, 100000.0f);
     v.field({"zenith_color", "", "unused by the physical sky (old scenes load)"}, s.zenith_color, 0.0f, 100.0f);
     v.field({"horizon_color", "", "unused by the physical sky (old scenes load)"}, s.horizon_color, 0.0f, 100.0f);
 }

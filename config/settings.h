@@ -130,6 +130,20 @@ struct SkySettings {
     int sky_view_height = 108;       //!< texels in elevation (sqrt horizon mapping), 16..1024
     int sky_view_steps = 32;         //!< steps along each view ray, 4..256 (also for views from space)
     float rebuild_sun_deg = 0.05f;   //!< deg, grid of sun elevations the sky-view LUT is built for (0: exact), 0..10
+    // Aerial perspective: haze over everything at finite depth, from a froxel volume of the
+    // in-scattering and transmittance between the camera and each depth slice (Hillaire 2020).
+    bool aerial_perspective = true;  //!< haze and extinction on geometry ("sky.aerial"); off adds no pass
+    float aerial_distance_km = 64.0f; //!< km, depth the volume reaches (slices quadratic in depth; beyond, the last), 1..1000
+    int aerial_size = 32;            //!< froxels per screen side, 8..256
+    int aerial_slices = 32;          //!< depth slices, 4..256
+    int aerial_steps = 2;            //!< integration steps per slice, 1..16
+    // Optional height fog: an extra grey scattering medium, density fog_density_per_km *
+    // exp(-(altitude - fog_base_m) / fog_falloff_m), lit like the aerosols, in the aerial
+    // perspective and the sky view (so fogged terrain meets a fogged horizon).
+    bool height_fog = false;         //!< add the fog medium
+    float fog_density_per_km = 1.0f; //!< 1/km extinction at fog_base_m (3.9 / value = visibility in km), 0..1000
+    float fog_base_m = 0.0f;         //!< m, altitude where the density is fog_density_per_km, -10000..100000
+    float fog_falloff_m = 200.0f;    //!< m, height over which the density falls by e, 1..100000
     glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< unused by the physical sky; old scenes load
     glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< unused by the physical sky; old scenes load
 };

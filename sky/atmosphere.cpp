@@ -74,7 +74,7 @@ double lutSunElevation(const glm::dvec3& sun, const SkySettings& sky) {
 
 // std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
 struct SkyAtmosphere::Uniforms {
-    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon;
+    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon, fog, aerial;
     glm::ivec4 sizes, sizes2;
     glm::vec4 gl[16];
     glm::ivec4 gl_count;
@@ -107,7 +107,7 @@ AtmosphereParams atmosphereParams(const SkySettings& s) {
 
 std::vector<std::string> skyPrograms() {
     return {"sky/shaders/transmittance_lut.glsl", "sky/shaders/multiscatter_lut.glsl", "sky/shaders/sky_view_lut.glsl",
-            "sky/shaders/sky.glsl"};
+            "sky/shaders/sky.glsl", "sky/shaders/aerial_volume.glsl", "sky/shaders/aerial.glsl"};
 }
 
 SkyAtmosphere::SkyAtmosphere()
@@ -129,7 +129,7 @@ void SkyAtmosphere::setCamera(Uniforms& u, const AtmosphereParams& p, double alt
 }
 
 void SkyAtmosphere::upload(const Uniforms& u) {
-    static_assert(sizeof(Uniforms) == 464, "Uniforms must match the std140 block");
+    static_assert(sizeof(Uniforms) == 496, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
 }
@@ -153,6 +153,9 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
     u.solar = glm::vec4(glm::vec3(p.solar_irradiance) * sky.sun_illuminance, sky.sun_illuminance);
     u.sun = glm::vec4(glm::vec3(sun), 0.0f);
     setCamera(u, p, altitude_m);
+    if (sky.height_fog && sky.fog_density_per_km > 0.0f)
+        u.fog = glm::vec4(sky.fog_density_per_km, sky.fog_base_m * km, sky.fog_falloff_m * km, 0.0f);
+    u.aerial = glm::vec4(sky.aerial_distance_km, float(sky.aerial_size), float(sky.aerial_slices), float(sky.aerial_steps));
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
     u.sizes2 = {sky.sky_view_height, sky.transmittance_steps, sky.multiscatter_steps, sky.sky_view_steps};
     std::vector<double> gx, gw;
@@ -166,7 +169,7 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
         atmosphere_key.insert(atmosphere_key.end(), {v->x, v->y, v->z, v->w});
     atmosphere_key.insert(atmosphere_key.end(), {u.misc.x, u.misc.y});
     for (int v : {u.sizes.x, u.sizes.y, u.sizes.z, u.sizes2.y, u.sizes2.z}) atmosphere_key.push_back(float(v));
-    std::vector<float> view_key = {float(u.sizes.w), float(u.sizes2.x), float(u.sizes2.w)};
+    std::vector<float> view_key = {float(u.sizes.w), float(u.sizes2.x), float(u.sizes2.w), u.fog.x, u.fog.y, u.fog.z};
 
     bool rebuild_atmosphere = !atmosphere_valid_ || atmosphere_key != atmosphere_key_;
     if (rebuild_atmosphere) {
@@ -244,6 +247,9 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
                            });
     }
 
+    if (sky.aerial_perspective && targets.depth.valid())
+        addAerialPasses(graph, rc, u, in_space, transmittance, multiscatter, targets);
+
     struct Data {
         TextureHandle hdr, depth, transmittance, multiscatter, sky_view;
     };
@@ -272,6 +278,79 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
             drawFullscreen(rc);
             glDisable(GL_DEPTH_TEST);
             glDepthMask(GL_TRUE);
+        });
+    targets.hdr = d.hdr;
+}
+
+// "sky.aerial_volume" fills the froxel volume for this frame's view, "sky.aerial" applies it to
+// every pixel at finite depth (after the lighting, before the sky fills depth 0). From space
+// there is no volume: "sky.aerial" marches each pixel's ray through the atmosphere.
+void SkyAtmosphere::addAerialPasses(FrameGraph& graph, const RenderContext& rc, const Uniforms& u, bool in_space,
+                                    TextureHandle transmittance, TextureHandle multiscatter, SceneTargets& targets) {
+    struct VolumeData {
+        TextureHandle transmittance, multiscatter, inscatter, aerial_transmittance;
+    };
+    TextureHandle inscatter, aerial_transmittance;
+    if (!in_space) {
+        const int size = int(u.aerial.y), slices = int(u.aerial.z);
+        const TextureDesc atlas{size * slices, size, PixelFormat::RGBA16F};
+        const VolumeData& v = graph.addPass<VolumeData>("sky.aerial_volume",
+            [&](PassBuilder& b, VolumeData& data) {
+                data.transmittance = b.read(transmittance);
+                data.multiscatter = b.read(multiscatter);
+                data.inscatter = b.write(b.create("sky.aerial_inscatter", atlas));
+                data.aerial_transmittance = b.write(b.create("sky.aerial_transmittance", atlas));
+            },
+            [this, &rc, u, size](const VolumeData& data, PassContext& ctx) {
+                upload(u);
+                glUseProgram(rc.shaders.get("sky/shaders/aerial_volume.glsl")->id());
+                glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
+                glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
+                glBindImageTexture(binding::kImageOutput, ctx.texture(data.inscatter), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                                   GL_RGBA16F);
+                glBindImageTexture(SKY_IMAGE_AERIAL_TRANSMITTANCE, ctx.texture(data.aerial_transmittance), 0, GL_FALSE,
+                                   0, GL_WRITE_ONLY, GL_RGBA16F);
+                glDispatchCompute(GLuint((size + 7) / 8), GLuint((size + 7) / 8), 1);
+                glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+            });
+        inscatter = v.inscatter;
+        aerial_transmittance = v.aerial_transmittance;
+    }
+
+    struct Data {
+        TextureHandle hdr, depth, inscatter, aerial_transmittance, transmittance, multiscatter;
+    };
+    const Data& d = graph.addPass<Data>("sky.aerial",
+        [&](PassBuilder& b, Data& data) {
+            data.depth = b.read(targets.depth);
+            if (inscatter.valid()) {
+                data.inscatter = b.read(inscatter);
+                data.aerial_transmittance = b.read(aerial_transmittance);
+            } else {
+                data.transmittance = b.read(transmittance);
+                data.multiscatter = b.read(multiscatter);
+            }
+            data.hdr = b.write(targets.hdr);
+        },
+        [this, &rc, u](const Data& data, PassContext& ctx) {
+            upload(u);
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
+            glUseProgram(rc.shaders.get("sky/shaders/aerial.glsl")->id());
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            if (data.inscatter.valid()) {
+                glBindTextureUnit(binding::kTex1, ctx.texture(data.inscatter));
+                glBindTextureUnit(binding::kTex2, ctx.texture(data.aerial_transmittance));
+            } else {
+                glBindTextureUnit(binding::kTex3, ctx.texture(data.transmittance));
+                glBindTextureUnit(binding::kTex4, ctx.texture(data.multiscatter));
+            }
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // hdr = in-scattering + hdr * transmittance
+            drawFullscreen(rc);
+            glDisable(GL_BLEND);
+            // Mesa refuses multi-target draws while a dual-source factor is set, blending on or off.
+            glBlendFunc(GL_ONE, GL_ZERO);
         });
     targets.hdr = d.hdr;
 }

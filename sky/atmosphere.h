@@ -38,7 +38,10 @@ struct SkyLutStats {
 class SkyAtmosphere {
 public:
     SkyAtmosphere();
-    // Adds the passes this frame needs: the LUT passes whose inputs changed, then
+    // Adds the passes this frame needs: the LUT passes whose inputs changed; with
+    // aerial_perspective and a depth target, "sky.aerial_volume" (not from space) and
+    // "sky.aerial" (haze and extinction over targets.hdr where targets.depth > 0, so after the
+    // lighting); then
     // "sky.atmosphere" over targets.hdr where targets.depth (if valid) is still at infinity.
     void addPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
     // Forces every LUT to be rebuilt next frame (benchmarks).
@@ -51,6 +54,8 @@ public:
 private:
     struct Uniforms;
     static void setCamera(Uniforms& u, const AtmosphereParams& p, double altitude_m);
+    void addAerialPasses(FrameGraph& graph, const RenderContext& rc, const Uniforms& u, bool in_space,
+                         TextureHandle transmittance, TextureHandle multiscatter, SceneTargets& targets);
     void upload(const Uniforms& u);
 
     gl::Buffer uniforms_;

@@ -17,6 +17,8 @@ layout(std140, binding = SKY_BINDING_ATMOSPHERE) uniform AtmosphereUniforms {
     vec4 a_solar;          // xyz solar irradiance * sun illuminance (HDR), w sun illuminance
     vec4 a_sun;            // xyz unit vector towards the sun (world = planet frame at the camera)
     vec4 a_horizon;        // the camera's horizon (double on the CPU): x mu_h, y sqrt(1 - mu_h^2), z elevation (rad, <= 0)
+    vec4 a_fog;            // height fog: x extinction at the base (1/km, 0: none), y base altitude, z falloff (km)
+    vec4 a_aerial;         // aerial-perspective volume: x depth reached (km), y froxels per side, z slices, w steps per slice
     ivec4 a_sizes;         // transmittance w, h, multiscatter size, sky-view w
     ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps
     vec4 a_gl[16];         // x Gauss-Legendre node on [0, 1], y weight (multiple-scattering sphere)
@@ -32,6 +34,14 @@ struct Medium {
     vec3 rayleigh, mie, extinction;
 };
 
+// Height fog's extinction (1/km, grey, pure scattering); the exponent is capped so that deep
+// below its base the density stays finite.
+float fogExtinction(float h) {
+    return a_fog.x > 0.0 ? a_fog.x * exp(min((a_fog.y - h) / a_fog.z, 30.0)) : 0.0;
+}
+
+// The medium at radius r. Programs that define SKY_FOG see the height fog as extra aerosol
+// (same phase function); the transmittance and multiple-scattering LUTs do not.
 Medium medium(float r) {
     float h = max(r - bottomR(), 0.0);
     float dr = exp(-h / a_rayleigh.w), dm = exp(-h / a_mie.w);
@@ -40,6 +50,11 @@ Medium medium(float r) {
     m.rayleigh = a_rayleigh.xyz * dr;
     m.mie = a_mie.xyz * dm;
     m.extinction = m.rayleigh + a_mie_ext.xyz * dm + a_ozone.xyz * oz;
+#ifdef SKY_FOG
+    float fog = fogExtinction(h);
+    m.mie += vec3(fog);
+    m.extinction += vec3(fog);
+#endif
     return m;
 }
 
@@ -69,6 +84,16 @@ float distanceToGround(float r, float mu) {
 float distanceToTop(float r, float mu) {
     float Rt = topR();
     return max(-r * mu + safeSqrt((Rt - r) * (Rt + r) + (r * mu) * (r * mu)), 0.0);
+}
+
+// Distance from radius r along mu to where the ray enters the atmosphere: 0 inside it, -1 when
+// the ray misses it (the aerial perspective starts there when the camera is in space).
+float atmosphereEntry(float r, float mu) {
+    float Rt = topR();
+    if (r <= Rt) return 0.0;
+    float disc = (Rt - r) * (Rt + r) + (r * mu) * (r * mu);
+    if (mu >= 0.0 || disc < 0.0) return -1.0;
+    return (r - Rt) * (r + Rt) / (-r * mu + sqrt(disc));
 }
 
 float horizonMu(float r) {
@@ -187,6 +212,21 @@ RaySums integrateRay(float r, float mu, float mu_s, float nu, float len, int ste
         }
     }
     return s;
+}
+#endif
+
+#if defined(SKY_TRANSMITTANCE_LUT) && defined(SKY_MULTISCATTER_LUT)
+// What a view ray gathers at distance t from the camera (direction mu, sun at mu_s, nu): the
+// radiance scattered towards the camera per km (single scattering with the planet's shadow,
+// plus multiple scattering) and the extinction, as integrateRay's mode 0.
+void viewSample(float r, float mu, float mu_s, float nu, float phase_r, float phase_m, float t, out vec3 j,
+                out vec3 extinction) {
+    float r_t = sqrt(max(r * r + t * (2.0 * r * mu + t), 0.0));
+    float mu_s_t = clamp((r * mu_s + t * nu) / max(r_t, 1e-6), -1.0, 1.0);
+    Medium m = medium(r_t);
+    vec3 sun = transmittanceToTop(r_t, mu_s_t) * sunVisible(r_t, mu_s_t);
+    j = (m.rayleigh * phase_r + m.mie * phase_m) * sun + (m.rayleigh + m.mie) * multiscatter(r_t, mu_s_t);
+    extinction = max(m.extinction, vec3(1e-12));
 }
 #endif
 

@@ -11,6 +11,7 @@
 #define SKY_TEX_MULTISCATTER BINDING_TEX_1
 #define SKY_TRANSMITTANCE_LUT
 #define SKY_MULTISCATTER_LUT
+#define SKY_FOG
 #include "atmosphere.glsl"
 layout(binding = BINDING_TEX_2) uniform sampler2D u_sky_view;
 in vec2 v_uv;

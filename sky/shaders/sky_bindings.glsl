@@ -1,3 +1,4 @@
 // Binding points of the sky's own GL resources, shared by C++ (sky/atmosphere.cpp includes
 // this file) and GLSL. Only #defines and // comments.
 #define SKY_BINDING_ATMOSPHERE 1
+#define SKY_IMAGE_AERIAL_TRANSMITTANCE 1

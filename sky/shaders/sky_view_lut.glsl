@@ -6,6 +6,7 @@
 #define SKY_TEX_MULTISCATTER BINDING_TEX_1
 #define SKY_TRANSMITTANCE_LUT
 #define SKY_MULTISCATTER_LUT
+#define SKY_FOG
 #include "atmosphere.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba16f, binding = BINDING_IMAGE_OUTPUT) uniform writeonly image2D u_output;

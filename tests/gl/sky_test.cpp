@@ -6,7 +6,13 @@
 #include "gl_fixture.h"
 #include "sky/atmosphere.h"
 #include "sky/sky_reference_image.h"
+#include "terrain/heightmap.h"
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 using namespace vista;
@@ -147,4 +153,143 @@ TEST_CASE("gl: a sky frame does not depend on the frames drawn before it") {
     render(before_b, view(1.7, 180.0, 5.0));
     Rendered b = render(s, view(2.0, 180.0, 5.0));
     CHECK(a.hdr == b.hdr);
+}
+
+namespace {
+
+// A flat map 1000 km wide with its ground at 50 m (heightmap 0.5 x 100 m) and a sky-only scene.
+Settings flatGround(const test::TempDir& dir, float sun_elevation, float sun_azimuth) {
+    Heightmap map{65, 65, std::vector<float>(65 * 65, 0.5f)};
+    REQUIRE(saveHeightmapPng16(dir.path / "flat.png", map).empty());
+    Settings s = skyOnly(sun_elevation, sun_azimuth);
+    s.terrain.enabled = true;
+    s.terrain.heightmap = (dir.path / "flat.png").string();
+    s.terrain.size_m = 1.0e6f;
+    s.terrain.height_scale_m = 100.0f;
+    return s;
+}
+constexpr double kFlatGroundM = 100.0 * (32768.0 / 65535.0);
+
+struct AerialError {
+    int ground = 0, sky_changed = 0;
+    double psnr = 0.0, worst = 0.0;  // relative to the largest change the haze makes
+};
+
+// Renders v without and with aerial perspective. Each ground pixel's distance is known, so the
+// haze must turn plain into plain * T + S, with T and S integrated on the CPU from the camera to
+// the ground along the same ray (pixels near the horizon or beyond max_t_m are left out).
+AerialError aerialError(Settings s, const ViewParams& v, double max_t_m) {
+    s.sky.aerial_perspective = false;
+    Rendered plain = render(s, v);
+    s.sky.aerial_perspective = true;
+    Rendered hazy = render(s, v);
+    CHECK(hazy.nonfinite == 0);
+
+    const AtmosphereParams p = atmosphereParams(s.sky);
+    const glm::dvec3 sun = sunDirection(s.sky);
+    const glm::dmat4 inv(viewMatrices(v).inv_view_proj);
+    const double camera_m = v.position.y;
+    AerialError out;
+    std::vector<glm::dvec3> expected, got, before;
+    for (int y = 0; y < v.height; ++y)
+        for (int x = 0; x < v.width; ++x) {
+            std::size_t i = std::size_t(y * v.width + x);
+            glm::dvec2 uv((x + 0.5) / v.width, 1.0 - (y + 0.5) / v.height);
+            glm::dvec4 q = inv * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
+            glm::dvec3 d = glm::normalize(glm::dvec3(q) / q.w);
+            glm::dvec3 b, a;
+            for (int c = 0; c < 3; ++c) {
+                b[c] = glm::unpackHalf1x16(plain.hdr[i * 4 + std::size_t(c)]);
+                a[c] = glm::unpackHalf1x16(hazy.hdr[i * 4 + std::size_t(c)]);
+            }
+            const double t = d.y < 0.0 ? (camera_m - kFlatGroundM) / -d.y : 0.0;
+            if (d.y > -0.02 || t > max_t_m) {
+                if (d.y > 0.0 && a != b) ++out.sky_changed;
+                continue;
+            }
+            ViewRayResult r = integrateViewRay(p, {0.0, camera_m, 0.0}, d, sun, t, {64, 64}, &referenceTable());
+            expected.push_back(b * r.transmittance + r.radiance * double(s.sky.sun_illuminance));
+            got.push_back(a);
+            before.push_back(b);
+        }
+    out.ground = int(expected.size());
+    double peak = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const glm::dvec3 change = glm::abs(expected[i] - before[i]);
+        peak = std::max({peak, change.x, change.y, change.z});
+    }
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            double e = (got[i][c] - expected[i][c]) / peak;
+            sum += e * e;
+            out.worst = std::max(out.worst, std::abs(e));
+        }
+    out.psnr = out.ground > 0 ? 10.0 * std::log10(1.0 / (sum / (3.0 * out.ground))) : 0.0;
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("gl: aerial perspective on the ground matches the CPU reference along the same segment") {
+    test::TempDir dir("aerial");
+    Settings s = flatGround(dir, 10.0f, 200.0f);
+    // 200 m above the ground looking down 12 deg, the sun 50 deg to the right: ground from
+    // 250 m to the volume's reach.
+    AerialError e = aerialError(s, ViewParams{{0.0, 250.0, 0.0}, 150.0, -12.0, 60.0, 0.5, 96, 54},
+                                0.9 * s.sky.aerial_distance_km * 1e3);
+    MESSAGE("aerial perspective near the ground: " << e.ground << " pixels, " << e.psnr << " dB, worst " << e.worst);
+    REQUIRE(e.ground > 1000);
+    CHECK(e.psnr >= 40.0);
+    CHECK(e.worst < 0.05);
+    CHECK(e.sky_changed == 0);  // the sky is the sky pass's alone
+
+    // From orbit the volume starts at the top of the atmosphere and reaches the ground through it.
+    AerialError orbit = aerialError(s, ViewParams{{0.0, 400000.0, 0.0}, 150.0, -60.0, 40.0, 0.5, 64, 36}, 1e9);
+    MESSAGE("aerial perspective from 400 km: " << orbit.ground << " pixels, " << orbit.psnr << " dB, worst " << orbit.worst);
+    REQUIRE(orbit.ground > 1000);
+    CHECK(orbit.psnr >= 30.0);
+}
+
+TEST_CASE("gl: height fog thickens the haze, reaches the sky view, and aerial perspective off adds no pass") {
+    test::TempDir dir("fog");
+    Settings s = flatGround(dir, 10.0f, 200.0f);
+    const ViewParams v{{0.0, 250.0, 0.0}, 150.0, -12.0, 60.0, 0.5, 96, 54};
+    FrameRenderer& r = renderer();
+    REQUIRE(r.prepare(s).empty());
+    std::vector<std::uint16_t> hdr;
+    FrameRequest request;
+    request.capture_hdr = &hdr;
+    FrameReport clear = r.render(s, v, 0.0, request);
+    auto has = [](const FrameReport& rep, const char* pass) {
+        return std::find(rep.executed.begin(), rep.executed.end(), pass) != rep.executed.end();
+    };
+    CHECK(has(clear, "sky.aerial_volume"));
+    CHECK(has(clear, "sky.aerial"));
+    std::vector<std::uint16_t> clear_hdr = hdr;
+
+    s.sky.height_fog = true;
+    s.sky.fog_density_per_km = 2.0f;
+    s.sky.fog_base_m = 50.0f;
+    s.sky.fog_falloff_m = 300.0f;
+    Rendered fog = render(s, v);
+    CHECK(fog.nonfinite == 0);
+    // Far ground (top ground rows) loses its own colour: closer to the fogged horizon sky above it.
+    auto pixel = [&](const std::vector<std::uint16_t>& img, int x, int y) {
+        std::size_t i = std::size_t(y * v.width + x) * 4;
+        return glm::vec3(glm::unpackHalf1x16(img[i]), glm::unpackHalf1x16(img[i + 1]), glm::unpackHalf1x16(img[i + 2]));
+    };
+    const int x = v.width / 2, horizon_y = 19, far_ground_y = 24, near_ground_y = 50;
+    auto contrast = [&](const std::vector<std::uint16_t>& img) {
+        glm::vec3 a = pixel(img, x, far_ground_y), b = pixel(img, x, horizon_y);
+        return glm::length(a - b) / std::max(glm::length(b), 1e-6f);
+    };
+    CHECK(contrast(fog.hdr) < contrast(clear_hdr));
+    CHECK(pixel(fog.hdr, x, near_ground_y) != pixel(clear_hdr, x, near_ground_y));
+    CHECK(pixel(fog.hdr, x, 2) != pixel(clear_hdr, x, 2));  // the sky view sees the fog too
+
+    s.sky.aerial_perspective = false;
+    FrameReport off = r.render(s, v, 0.0, request);
+    CHECK_FALSE(has(off, "sky.aerial_volume"));
+    CHECK_FALSE(has(off, "sky.aerial"));
+    CHECK(has(off, "sky.atmosphere"));
 }
