@@ -22,20 +22,14 @@ in vec2 v_uv;
 layout(location = 0, index = 0) out vec4 o_inscatter;
 layout(location = 0, index = 1) out vec4 o_transmittance;
 
-// Bilinear inside slice k's tile (never across tiles).
+// Bilinear inside slice k's tile, never across tiles: the filtered coordinate stays between the
+// tile's first and last texel centres.
 void fetchSlice(int k, vec2 uv, out vec3 inscatter, out vec3 transmittance) {
-    int size = int(a_aerial.y);
-    vec2 f = clamp(uv * float(size - 1), vec2(0.0), vec2(float(size - 1)));
-    ivec2 i0 = ivec2(floor(f));
-    ivec2 i1 = min(i0 + 1, ivec2(size - 1));
-    vec2 a = f - vec2(i0);
-    ivec2 base = ivec2(k * size, 0);
-    inscatter = mix(mix(texelFetch(u_inscatter, base + i0, 0).rgb, texelFetch(u_inscatter, base + ivec2(i1.x, i0.y), 0).rgb, a.x),
-                    mix(texelFetch(u_inscatter, base + ivec2(i0.x, i1.y), 0).rgb, texelFetch(u_inscatter, base + i1, 0).rgb, a.x), a.y);
-    transmittance = mix(mix(texelFetch(u_aerial_transmittance, base + i0, 0).rgb,
-                            texelFetch(u_aerial_transmittance, base + ivec2(i1.x, i0.y), 0).rgb, a.x),
-                        mix(texelFetch(u_aerial_transmittance, base + ivec2(i0.x, i1.y), 0).rgb,
-                            texelFetch(u_aerial_transmittance, base + i1, 0).rgb, a.x), a.y);
+    float size = a_aerial.y;
+    vec2 f = clamp(uv * (size - 1.0), vec2(0.0), vec2(size - 1.0)) + 0.5;
+    vec2 atlas_uv = vec2((float(k) * size + f.x) / (size * a_aerial.z), f.y / size);
+    inscatter = texture(u_inscatter, atlas_uv).rgb;
+    transmittance = texture(u_aerial_transmittance, atlas_uv).rgb;
 }
 
 void main() {
