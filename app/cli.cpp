@@ -183,7 +183,7 @@ int runCli(int argc, char** argv) {
         ->delimiter(',')->check(CLI::Range(0, 1000000));
     bench_lights->add_option("--methods", lights_methods, "comma-separated: naive,tiled,clustered,hashed (default: all)");
     bench_lights->add_option("--size", lights_size, "frame size WxH (default 320x180)");
-    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after one warm-up")->check(CLI::Range(1, 1000));
+    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after three warm-up frames")->check(CLI::Range(1, 1000));
     bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(CLI::Range(0.0f, 1.0e4f));
     bench_lights->add_option("--backend", lights_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_lights->add_option("--json", lights_json, "also write the results as JSON");

@@ -182,7 +182,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
             hash_message_ = stats_.hash.message;
         }
         if (!stats_.hash.ok) stats_.method = LightCulling::Clustered;
-    } else if (hash_built_) {
+    } else if (hash_built_ || hash_buf_.buffer.id()) {
         hash_ = LightHash();  // another method: the octree's memory goes
         hash_built_ = false;
         hash_buf_ = {};

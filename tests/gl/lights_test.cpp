@@ -286,3 +286,19 @@ TEST_CASE("gl: forward light lists cover transparent surfaces in front of the op
     // probe sees the difference (the check above is not vacuous).
     CHECK(probe(LightCulling::Clustered, false)[0] > 0);
 }
+
+TEST_CASE("gl: switching methods frees the structures the new method does not use") {
+    Settings s = hillScene();
+    addVolume(s, "grid", "box -200 0 -200 200 0 200  count 10 1 10  radius 30  intensity 400  ground 3");
+    render(s, LightCulling::Hashed, kView);
+    REQUIRE(renderer().localLights());
+    const std::size_t hashed = renderer().localLights()->stats().memory_bytes;
+    s.lights.volumes[0].volume.count = {12, 1, 12};  // new lights and a new method in one frame
+    render(s, LightCulling::Naive, kView);
+    const std::size_t naive = renderer().localLights()->stats().memory_bytes;
+    CAPTURE(hashed);
+    CAPTURE(naive);
+    CHECK(naive <= std::size_t(144 * 48 * 3 / 2 + 256));  // the light buffer (grown at most 1.5x) and the grid block
+    render(s, LightCulling::Clustered, kView);
+    CHECK(renderer().localLights()->stats().memory_bytes > naive);
+}
