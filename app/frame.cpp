@@ -1,7 +1,7 @@
 // The frame: which passes run, in which order, for the current settings.
 #include "app/frame.h"
 
-#include "postfx/tonemap.h"
+#include "postfx/chain.h"
 #include "renderer/bindings.h"
 #include "renderer/debug_grid.h"
 #include "renderer/debug_view.h"
@@ -36,7 +36,7 @@ std::vector<ProgramKey> allPrograms() {
         programs.push_back({"lighting/shaders/light_cull.glsl", {method}});
         programs.push_back({"lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
     }
-    for (auto& [file, defines] : tonemapPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     return programs;
 }
@@ -193,16 +193,18 @@ void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& 
     if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
     GroundHeight ground;
     if (terrain_) ground = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
-    if (!local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground)) return;
+    const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground);
+    const LocalLightStats& st = local_lights_->stats();
+    report.counters["lights.count"] = double(st.count);
+    report.counters["lights.visible"] = double(st.visible);
+    report.counters["lights.build_ms"] = st.build_ms;
+    report.counters["lights.memory_bytes"] = double(st.memory_bytes);
+    if (!any) return;
     LightPassOptions options;
     options.count = request.count_lights;
     options.heat = s.debug.view == DebugView::Lights;
     options.forward = request.forward_lights;
     local_lights_->addPasses(graph, rc, scene, counters_, options);
-    const LocalLightStats& st = local_lights_->stats();
-    report.counters["lights.count"] = double(st.count);
-    report.counters["lights.build_ms"] = st.build_ms;
-    report.counters["lights.memory_bytes"] = double(st.memory_bytes);
 }
 
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
@@ -236,7 +238,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
-    TextureHandle display = addTonemapPass(graph, rc, scene.hdr, s);
+    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s);
     if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug, scene);
 
     if (request.capture_hdr || request.capture_ldr)

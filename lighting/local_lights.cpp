@@ -188,16 +188,45 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         hash_buf_ = {};
     }
 
+    // The lights the GPU sees. Tiled and clustered take only those whose bounding sphere meets
+    // the view frustum (no other can light a visible point); naive loops over all by definition,
+    // and hashed's octree indexes all of them.
+    const bool screen_culled = stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered;
+    const double ty = std::tan(glm::radians(view.fov_deg) * 0.5), tx = ty * double(view.width) / double(view.height);
+    const double kx = std::sqrt(1.0 + tx * tx), ky = std::sqrt(1.0 + ty * ty);
+    std::vector<glm::vec4> spheres;  // view space, for the culling pass
+    std::vector<std::uint32_t> order;
+    order.reserve(animated_.size());
+    for (std::size_t i = 0; i < animated_.size(); ++i) {
+        if (!screen_culled) {
+            order.push_back(std::uint32_t(i));
+            continue;
+        }
+        const glm::dvec3 rel = world_spheres_[i].center - view.position;
+        const glm::dvec3 c{glm::dot(rel, m.right), glm::dot(rel, m.up), glm::dot(rel, m.forward)};  // z: depth
+        const double r = world_spheres_[i].radius * (1.0 + 1e-4) + 1e-4 * glm::length(rel);
+        if (world_spheres_[i].radius <= 0.0 || c.z < view.near_m - r || std::abs(c.x) > c.z * tx + r * kx ||
+            std::abs(c.y) > c.z * ty + r * ky)
+            continue;
+        order.push_back(std::uint32_t(i));
+        spheres.push_back(glm::vec4(glm::vec3(c.x, c.y, -c.z), float(world_spheres_[i].radius)));
+    }
+    stats_.visible = order.size();
+    if (order.empty()) {
+        stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        return false;  // nothing can light a visible point: no passes
+    }
+
     // Light buffer, camera-relative (the subtraction in double keeps far-out scenes exact).
-    const std::size_t n = animated_.size();
+    const std::size_t n = order.size();
     std::vector<GpuLight> gpu(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Light& l = animated_[i];
+    for (std::size_t k = 0; k < n; ++k) {
+        const Light& l = animated_[order[k]];
         const SpotCone cone = spotCone(l);
-        gpu[i].position_radius = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
-        gpu[i].color_scale = glm::vec4(l.color * l.intensity, cone.scale);
+        gpu[k].position_radius = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
+        gpu[k].color_scale = glm::vec4(l.color * l.intensity, cone.scale);
         glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
-        gpu[i].direction_offset = glm::vec4(dir, cone.offset);
+        gpu[k].direction_offset = glm::vec4(dir, cone.offset);
     }
     lights_buf_.upload(gpu.data(), n * sizeof(GpuLight), "lights");
 
@@ -239,13 +268,6 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         u.grid2 = glm::uvec4(std::uint32_t(slices), std::uint32_t(cap), std::uint32_t(entries), 0u);
         u.slices = glm::vec4(float(grid_.near0_m), float(1.0 / grid_.log_ratio), float(grid_.log_ratio),
                              float(grid_.tan_half_fov_y));
-        // View-space bounding spheres for the culling pass.
-        std::vector<glm::vec4> spheres(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const glm::dvec3 rel = world_spheres_[i].center - view.position;
-            spheres[i] = glm::vec4(float(glm::dot(rel, m.right)), float(glm::dot(rel, m.up)),
-                                   float(-glm::dot(rel, m.forward)), float(world_spheres_[i].radius));
-        }
         spheres_buf_.upload(spheres.data(), n * sizeof(glm::vec4), "lights.spheres");
     } else {
         cells_buf_ = {};

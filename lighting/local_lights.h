@@ -12,7 +12,8 @@
 // passes, no buffers.
 //
 // GPU layouts (std430, lighting/shaders/lights.glsl):
-//   lights    3 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
+//   lights    (tiled, clustered: only the lights whose bounding sphere meets the view frustum,
+//             in light order; naive, hashed: all) 3 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
 //             scale; unit spot axis + cone offset (lighting/lights.h SpotCone; point: 0, 1).
 //   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
 //   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
@@ -60,6 +61,7 @@ std::vector<std::string> localLightPrograms();
 
 struct LocalLightStats {
     std::uint64_t count = 0;        // lights this frame
+    std::uint64_t visible = 0;      // of them, on the GPU: tiled and clustered keep those whose sphere meets the view frustum
     double build_ms = 0.0;          // CPU: collect, animate, hash update, upload
     std::size_t memory_bytes = 0;   // GPU buffers held
     LightCulling method = LightCulling::Clustered;  // the method used (hashed falls back to clustered when it cannot build)
@@ -81,8 +83,9 @@ public:
     LocalLights(const LocalLights&) = delete;
     LocalLights& operator=(const LocalLights&) = delete;
 
-    // The CPU side of a frame: lights at time_s, buffers for the view. False when there are
-    // no lights to draw (then add no passes).
+    // The CPU side of a frame: lights at time_s, buffers for the view. False when no light can
+    // reach a visible point (none at all, or, for tiled and clustered, none whose bounding
+    // sphere meets the view frustum): then add no passes.
     // ground (may be empty) gives the terrain height (m) at world x, z for volumes with `ground`.
     bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s,
                  const GroundHeight& ground);

@@ -230,6 +230,20 @@ TEST_CASE("gl: a scene without local lights runs no light pass and holds no ligh
     CHECK(contains(some.executed, "lights.cull"));
     CHECK(contains(some.executed, "lights.shade"));
     CHECK(renderer().localLights() != nullptr);
+    // Lights whose spheres all miss the view frustum (behind the camera): tiled and clustered
+    // skip their passes; their image is the same as naive's.
+    Settings behind = hillScene();
+    addVolume(behind, "behind", "box -400 0 300 -300 0 400  count 4 1 4  radius 30  intensity 400  ground 3");
+    const Lit naive = render(behind, LightCulling::Naive, kView);
+    CHECK(contains(naive.executed, "lights.shade"));
+    CHECK(naive.exact == 0);
+    for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered}) {
+        const Lit lit = render(behind, m, kView);
+        CHECK_FALSE(contains(lit.executed, "lights.cull"));
+        CHECK_FALSE(contains(lit.executed, "lights.shade"));
+        CHECK(renderer().localLights()->stats().visible == 0);
+        CHECK(maxRelativeDiff(naive, lit) == 0.0);
+    }
     s.lights.enabled = false;
     Lit off = render(s, LightCulling::Clustered, kView);
     CHECK_FALSE(contains(off.executed, "lights.shade"));
