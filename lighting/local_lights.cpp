@@ -186,6 +186,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         hash_ = LightHash();  // another method: the octree's memory goes
         hash_built_ = false;
         hash_buf_ = {};
+        hash_words_.clear();
     }
 
     // The lights the GPU sees. Tiled and clustered take only those whose bounding sphere meets
@@ -293,27 +294,78 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
 }
 
 void LocalLights::uploadHash() {
-    // Whole tables after any change: the incremental part is on the CPU (no full rebuild);
-    // uploading ranges (PerfectSpatialHash::dirty()) would be the next step.
-    std::vector<std::uint32_t> words(kHashHeaderWords, 0u);
-    auto append = [&](const PerfectSpatialHash& t, std::size_t header, bool data) {
-        words[header + 0] = std::uint32_t(words.size());
-        for (std::uint64_t v : t.values()) {
-            words.push_back(std::uint32_t(v));
-            if (data) words.push_back(std::uint32_t(v >> 32));
-        }
-        words[header + 1] = std::uint32_t(words.size());
-        words.insert(words.end(), t.offsets().begin(), t.offsets().end());
-        const std::uint32_t r = std::uint32_t(t.offsetSide());
-        words[header + 2] = std::uint32_t(std::max(t.tableSide(), 1));
-        words[header + 3] = std::max(r * r * r, 1u);
-        words[header + 4] = std::uint32_t(t.quotientSide());
+    // After an incremental update only the table entries and index-list entries that changed
+    // are written (PerfectSpatialHash::dirty(), LightHash::indicesDirtyBegin()); after a full
+    // build, a table rebuilt with new sizes, or a buffer that must grow, everything.
+    const int levels = hash_.levels();
+    auto table = [&](int l, bool data) -> const PerfectSpatialHash& {
+        return data ? hash_.dataTable(l) : hash_.nodeTable(l);
     };
-    for (int l = 0; l < hash_.levels(); ++l) append(hash_.nodeTable(l), std::size_t(l) * kHashLevelWords, false);
-    for (int l = 1; l <= hash_.levels(); ++l) append(hash_.dataTable(l), std::size_t(l) * kHashLevelWords + 8, true);
-    hash_buf_.upload(words.data(), words.size() * 4, "lights.hash");
-    std::span<const std::uint32_t> indices = hash_.indices();
-    indices_buf_.upload(indices.data(), indices.size_bytes(), "lights.indices");
+    auto header = [](int l, bool data) { return std::size_t(l) * kHashLevelWords + (data ? 8 : 0); };
+    bool full = hash_words_.empty() || stats_.hash.full_rebuild || levels != hash_levels_uploaded_;
+    for (int l = 0; l <= levels && !full; ++l)
+        for (bool data : {false, true})
+            if ((data ? l >= 1 : l < levels) && table(l, data).dirty().resized) full = true;
+    if (full) {
+        hash_words_.assign(kHashHeaderWords, 0u);
+        auto append = [&](const PerfectSpatialHash& t, std::size_t h, bool data) {
+            hash_words_[h + 0] = std::uint32_t(hash_words_.size());
+            for (std::uint64_t v : t.values()) {
+                hash_words_.push_back(std::uint32_t(v));
+                if (data) hash_words_.push_back(std::uint32_t(v >> 32));
+            }
+            hash_words_[h + 1] = std::uint32_t(hash_words_.size());
+            hash_words_.insert(hash_words_.end(), t.offsets().begin(), t.offsets().end());
+            const std::uint32_t r = std::uint32_t(t.offsetSide());
+            hash_words_[h + 2] = std::uint32_t(std::max(t.tableSide(), 1));
+            hash_words_[h + 3] = std::max(r * r * r, 1u);
+            hash_words_[h + 4] = std::uint32_t(t.quotientSide());
+        };
+        for (int l = 0; l < levels; ++l) append(hash_.nodeTable(l), header(l, false), false);
+        for (int l = 1; l <= levels; ++l) append(hash_.dataTable(l), header(l, true), true);
+        hash_buf_.upload(hash_words_.data(), hash_words_.size() * 4, "lights.hash");
+        hash_levels_uploaded_ = levels;
+        stats_.hash_upload_bytes = hash_words_.size() * 4;
+    } else {
+        stats_.hash_upload_bytes = 0;
+        auto write = [&](std::size_t first, std::size_t count) {
+            if (count == 0) return;
+            glNamedBufferSubData(hash_buf_.buffer.id(), GLintptr(first * 4), GLsizeiptr(count * 4), &hash_words_[first]);
+            stats_.hash_upload_bytes += count * 4;
+        };
+        for (int l = 0; l <= levels; ++l)
+            for (bool data : {false, true}) {
+                if (!(data ? l >= 1 : l < levels)) continue;
+                const PerfectSpatialHash& t = table(l, data);
+                const PerfectSpatialHash::Dirty& d = t.dirty();
+                const std::size_t h = header(l, data), w = data ? 2 : 1;
+                if (d.slot_begin < d.slot_end) {
+                    const std::size_t base = hash_words_[h + 0];
+                    for (std::uint32_t i = d.slot_begin; i < d.slot_end; ++i) {
+                        const std::uint64_t v = t.values()[i];
+                        hash_words_[base + w * i] = std::uint32_t(v);
+                        if (data) hash_words_[base + w * i + 1] = std::uint32_t(v >> 32);
+                    }
+                    write(base + w * d.slot_begin, w * (d.slot_end - d.slot_begin));
+                }
+                if (d.offset_begin < d.offset_end) {
+                    const std::size_t base = hash_words_[h + 1];
+                    for (std::uint32_t i = d.offset_begin; i < d.offset_end; ++i) hash_words_[base + i] = t.offsets()[i];
+                    write(base + d.offset_begin, d.offset_end - d.offset_begin);
+                }
+            }
+    }
+    const std::span<const std::uint32_t> indices = hash_.indices();
+    const std::size_t dirty = hash_.indicesDirtyBegin();
+    if (full || indices.size_bytes() > std::size_t(indices_buf_.buffer.size()) || indices_buf_.buffer.id() == 0 ||
+        dirty == 0) {
+        indices_buf_.upload(indices.data(), indices.size_bytes(), "lights.indices");
+        stats_.hash_upload_bytes += indices.size_bytes();
+    } else if (dirty < indices.size()) {
+        glNamedBufferSubData(indices_buf_.buffer.id(), GLintptr(dirty * 4), GLsizeiptr((indices.size() - dirty) * 4),
+                             indices.data() + dirty);
+        stats_.hash_upload_bytes += (indices.size() - dirty) * 4;
+    }
     hash_.clearDirty();
     hash_uploaded_ = true;
 }

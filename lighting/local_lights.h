@@ -68,6 +68,7 @@ struct LocalLightStats {
     int tiles_x = 0, tiles_y = 0, slices = 0;
     std::uint64_t overflow = 0;     // overflowed cells, as last read back (a few frames late)
     LightHashStats hash;            // hashed only
+    std::size_t hash_upload_bytes = 0;  // hashed: bytes of tables and index list uploaded this frame
 };
 
 struct LightPassOptions {
@@ -116,6 +117,8 @@ private:
     std::vector<Sphere> world_spheres_;
     LightHash hash_;
     LightHashSettings hash_settings_;
+    std::vector<std::uint32_t> hash_words_;  // the tables as uploaded (header + tables)
+    int hash_levels_uploaded_ = -1;
     bool hash_built_ = false, hash_uploaded_ = false;
     std::string hash_message_;
     ClusterGrid grid_;

@@ -203,10 +203,14 @@ TEST_CASE("gl: moving lights: the hashed octree updates without a rebuild and ma
     s.lights.animation.motion = LightMotion::Circle;
     s.lights.animation.amplitude_m = 6.0f;
     s.lights.animation.period_s = 8.0f;
+    s.lights.animation.fraction = 0.1f;  // a few lights move, as in a village with some lanterns carried about
     const double times[2] = {1.0, 2.5};
     Lit naive[2];
     for (int i = 0; i < 2; ++i) naive[i] = render(s, LightCulling::Naive, kView, times[i]);
     render(s, LightCulling::Hashed, kView, 0.0);  // builds the octree
+    REQUIRE(renderer().localLights());
+    const std::size_t full_upload = renderer().localLights()->stats().hash_upload_bytes;
+    CHECK(full_upload > 0);
     for (int i = 0; i < 2; ++i) {
         CAPTURE(times[i]);
         const Lit hashed = render(s, LightCulling::Hashed, kView, times[i]);
@@ -214,6 +218,7 @@ TEST_CASE("gl: moving lights: the hashed octree updates without a rebuild and ma
         const LightHashStats& h = renderer().localLights()->stats().hash;
         CHECK_FALSE(h.full_rebuild);
         CHECK(h.lights_changed > 0);
+        CHECK(renderer().localLights()->stats().hash_upload_bytes < full_upload);  // only what changed
         CHECK(hashed.exact == naive[i].exact);
         CHECK(maxRelativeDiff(naive[i], hashed) <= 1e-3);
     }
