@@ -37,20 +37,9 @@ void main() {
     }
     vec3 position = positionFromDepth((vec2(p) + 0.5) * u_viewport.zw, depth);
     vec3 v = safeNormalize(-position);
-#if defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED)
-    LightRange range = lightRange(p, linearDepth(depth));
-#elif defined(LIGHTS_HASHED)
-    LightRange range = lightRange(p, position);
-#else
-    LightRange range = LightRange(0u, u_grid.x, true);
-#endif
-    vec3 color = vec3(0.0);
-    uint exact = 0u;
-    for (uint i = 0u; i < range.count; ++i) {
-        bool reaches;
-        color += shadeLocalLight(u_lights[lightAt(range, i)], s, position, v, reaches);
-        exact += reaches ? 1u : 0u;
-    }
+    LightRange range = methodRange(p, position, linearDepth(depth));
+    uint exact;
+    vec3 color = shadeRange(range, s, position, v, exact);
 #ifdef COUNT_LIGHTS
     ADD_COUNTER64(u_eval_lo, u_eval_hi, range.count);
     ADD_COUNTER64(u_exact_lo, u_exact_hi, exact);

@@ -118,19 +118,8 @@ vec3 shadeLocalLight(LocalLight light, Surface s, vec3 position, vec3 v, out boo
            (attenuation * max(dot(s.normal, l), 0.0));
 }
 
-#if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
-// Forward shading (transparent surfaces, drawn after lights.cull with LocalLights::bindForForward):
-// the local light a surface at a camera-relative position reflects toward the eye, through the
-// same lists the deferred pass uses. `evaluated` and `exact` count lights shaded and reaching.
-vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, out uint evaluated, out uint exact) {
-    vec3 v = safeNormalize(-position);
-#if defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED)
-    LightRange range = lightRange(pixel, max(-(mat3(u_view) * position).z, 0.0));
-#elif defined(LIGHTS_HASHED)
-    LightRange range = lightRange(pixel, position);
-#else
-    LightRange range = LightRange(0u, u_grid.x, true);
-#endif
+// The lights of a range shaded at one surface point; `exact` counts those that reach it.
+vec3 shadeRange(LightRange range, Surface s, vec3 position, vec3 v, out uint exact) {
     vec3 color = vec3(0.0);
     exact = 0u;
     for (uint i = 0u; i < range.count; ++i) {
@@ -138,7 +127,28 @@ vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, out uint evaluate
         color += shadeLocalLight(u_lights[lightAt(range, i)], s, position, v, reaches);
         exact += reaches ? 1u : 0u;
     }
-    evaluated = range.count;
     return color;
+}
+
+#if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
+// The candidate lights of a surface point at a camera-relative position seen through a pixel,
+// for the method the program was compiled for (view_depth: its distance along the view axis).
+LightRange methodRange(ivec2 pixel, vec3 position, float view_depth) {
+#if defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED)
+    return lightRange(pixel, view_depth);
+#elif defined(LIGHTS_HASHED)
+    return lightRange(pixel, position);
+#else
+    return LightRange(0u, u_grid.x, true);
+#endif
+}
+
+// Forward shading (transparent surfaces, drawn after lights.cull with LocalLights::bindForForward):
+// the local light a surface at a camera-relative position reflects toward the eye, through the
+// same lists the deferred pass uses. `evaluated` and `exact` count lights shaded and reaching.
+vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, out uint evaluated, out uint exact) {
+    LightRange range = methodRange(pixel, position, max(-(mat3(u_view) * position).z, 0.0));
+    evaluated = range.count;
+    return shadeRange(range, s, position, safeNormalize(-position), exact);
 }
 #endif

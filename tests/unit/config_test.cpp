@@ -1,5 +1,6 @@
 // Scene files: loading, validation messages, --set overrides, saving and round trips.
 #include "config/ini.h"
+#include "config_helpers.h"
 
 #include <doctest/doctest.h>
 
@@ -34,6 +35,11 @@ public:
     void field(const FieldInfo& i, glm::dvec3& v, double, double) override { add(i, v); }
     void field(const FieldInfo& i, std::string& v) override { add(i, v); }
     void choice(const FieldInfo& i, int& v, std::span<const char* const>) override { add(i, v); }
+    void sequence(const FieldInfo& i, std::vector<int>& v, std::span<const char* const>) override {
+        std::string text;
+        for (int n : v) text += std::to_string(n) + " ";
+        add(i, text);
+    }
     void list(const FieldInfo& i, ListField& l) override {
         std::string& text = lists[section_ + "." + i.key];
         for (std::size_t e = 0; e < l.size(); ++e) text += l.name(e) + " = " + l.text(e) + "\n";
@@ -81,6 +87,10 @@ public:
     void choice(const FieldInfo&, int& v, std::span<const char* const> names) override {
         v = (v + 1) % int(names.size());
     }
+    void sequence(const FieldInfo&, std::vector<int>& v, std::span<const char* const> names) override {
+        v.clear();  // every name, in reverse
+        for (int n = int(names.size()) - 1; n >= 0; --n) v.push_back(n);
+    }
     // Adds an entry and perturbs its values through the panel's view of it.
     void list(const FieldInfo&, ListField& l) override {
         REQUIRE(l.set("perturbed", l.defaultText()) == "");
@@ -95,38 +105,11 @@ private:
     }
 };
 
-std::string messages(const InputErrors& errors) {
-    std::string out;
-    for (const InputError& e : errors) out += e.str() + "\n";
-    return out;
-}
-
-std::vector<int> lines(const InputErrors& errors) {
-    std::vector<int> out;
-    for (const InputError& e : errors) out.push_back(e.line);
-    return out;
-}
-
-// Loads text into s and expects exactly one error, on line; returns its message.
-std::string oneError(std::string_view text, Settings& s, int line) {
-    const InputErrors errors = loadIniString(text, "scene.ini", s);
-    INFO(messages(errors));
-    REQUIRE(errors.size() == 1);
-    CHECK(errors[0].file == "scene.ini");
-    CHECK(errors[0].line == line);
-    return errors[0].message;
-}
-
-std::string oneOverrideError(std::string_view assignment, Settings& s) {
-    const InputErrors errors = applyOverride(assignment, s);
-    INFO(messages(errors));
-    REQUIRE(errors.size() == 1);
-    CHECK(errors[0].file == "--set");
-    CHECK(errors[0].line == 0);
-    return errors[0].message;
-}
-
-bool contains(const std::string& text, std::string_view part) { return text.find(part) != text.npos; }
+using test::contains;
+using test::lines;
+using test::messages;
+using test::oneError;
+using test::oneOverrideError;
 
 // A fresh directory under the system temp dir, removed with everything in it.
 struct TempDir {
@@ -229,7 +212,8 @@ TEST_CASE("config: an unknown key is reported with a suggestion") {
 
     // Nothing close: the message lists the section's keys instead.
     CHECK(oneError("[postfx.exposure]\nbrightness = 2\n", s, 2) ==
-          "unknown key [postfx.exposure] brightness; accepted: enabled, ev");
+          "unknown key [postfx.exposure] brightness; accepted: enabled, mode, ev, min_ev, max_ev, low_percent, high_percent, "
+          "speed_up, speed_down");
 }
 
 TEST_CASE("config: an unknown section is reported once with a suggestion and its keys are skipped") {
@@ -299,7 +283,7 @@ TEST_CASE("config: a bad bool lists the accepted spellings") {
 TEST_CASE("config: a bad choice lists the accepted names") {
     Settings s;
     CHECK(oneError("[postfx.tonemap]\nop = filmic\n", s, 2) ==
-          "[postfx.tonemap] op = filmic is not accepted; accepted: reinhard, aces, clamp");
+          "[postfx.tonemap] op = filmic is not accepted; accepted: reinhard, aces, clamp, agx");
     CHECK(s.tonemap.op == Tonemapper::Aces);
     CHECK(contains(oneError("[capture]\nformat = jpg\n", s, 2), "accepted: png, exr"));
     CHECK(s.capture.format == ImageFormat::Png);
@@ -468,7 +452,7 @@ TEST_CASE("config: --set with a bad value leaves the field unchanged") {
     Settings s;
     CHECK(oneOverrideError("window.width=0", s) == "[window] width = 0 is out of range; accepted: 1..16384 (px)");
     CHECK(oneOverrideError("postfx.tonemap.op=filmic", s) ==
-          "[postfx.tonemap] op = filmic is not accepted; accepted: reinhard, aces, clamp");
+          "[postfx.tonemap] op = filmic is not accepted; accepted: reinhard, aces, clamp, agx");
     CHECK(contains(oneOverrideError("camera.fov_deg=", s), "is not a number"));
     CHECK(differences(s, Settings{}) == "");
 }
@@ -478,7 +462,8 @@ TEST_CASE("config: saved text has every section, help comments and ranges") {
     const std::string text = saveIniString(s);
     CHECK(text.starts_with("[window]\n; window and GL context\n; window width (px, 1..16384)\nwidth = 1280\n"));
     CHECK(contains(text, "\n[postfx.tonemap]\n; tone mapping from HDR to display\n"));
-    CHECK(contains(text, "; operator (one of: reinhard, aces, clamp)\nop = aces\n"));
+    CHECK(contains(text, "; operator: extended Reinhard on luminance, ACES fit (Narkowicz), clamp, AgX (Sobotka) "
+                         "(one of: reinhard, aces, clamp, agx)\nop = aces\n"));
     CHECK(contains(text, "; wait for vertical sync (true or false)\nvsync = true\n"));
     CHECK(contains(text, "; near plane (the far plane is at infinity) (m, 0.001..100)\nnear_m = 0.1\n"));
     CHECK(contains(text, "\nposition = 0 60 0\n"));

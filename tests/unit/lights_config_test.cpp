@@ -1,6 +1,7 @@
 // The [lights] section in scene files: the light.NAME / volume.NAME list keys through the
 // loader, `vista check`'s error collection, --set, the writer and the panel's entry view.
 #include "config/ini.h"
+#include "config_helpers.h"
 
 #include <doctest/doctest.h>
 
@@ -12,31 +13,10 @@ using namespace vista;
 
 namespace {
 
-std::string messages(const InputErrors& errors) {
-    std::string out;
-    for (const InputError& e : errors) out += e.str() + "\n";
-    return out;
-}
-
-// Loads text into s and expects exactly one error, on line; returns its message.
-std::string oneError(std::string_view text, Settings& s, int line) {
-    const InputErrors errors = loadIniString(text, "scene.ini", s);
-    INFO(messages(errors));
-    REQUIRE(errors.size() == 1);
-    CHECK(errors[0].file == "scene.ini");
-    CHECK(errors[0].line == line);
-    return errors[0].message;
-}
-
-std::string oneOverrideError(std::string_view assignment, Settings& s) {
-    const InputErrors errors = applyOverride(assignment, s);
-    INFO(messages(errors));
-    REQUIRE(errors.size() == 1);
-    CHECK(errors[0].file == "--set");
-    return errors[0].message;
-}
-
-bool contains(const std::string& text, std::string_view part) { return text.find(part) != text.npos; }
+using test::contains;
+using test::messages;
+using test::oneError;
+using test::oneOverrideError;
 
 std::vector<std::string> names(const LightsSettings& s) {
     std::vector<std::string> out;
