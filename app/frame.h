@@ -11,6 +11,7 @@
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
 #include "lighting/local_lights.h"
+#include "postfx/chain.h"
 #include "sky/atmosphere.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
@@ -62,6 +63,7 @@ public:
     Terrain* terrain() { return terrain_.get(); }
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
+    const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
@@ -92,6 +94,7 @@ private:
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
+    PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame

@@ -75,6 +75,48 @@ public:
         changed |= ImGui::Combo(f.key, &v, names.data(), int(names.size()));
         tooltip(f, "");
     }
+    // An ordered list of names (the post chain): one row per entry with up / down / remove
+    // buttons, and a combo that appends a name not listed yet.
+    void sequence(const FieldInfo& f, std::vector<int>& v, std::span<const char* const> names) override {
+        if (!section_open_) return;
+        ImGui::TextUnformatted(f.key);
+        tooltip(f, "");
+        ImGui::PushID(f.key);
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            ImGui::PushID(int(i));
+            const bool known = v[i] >= 0 && std::size_t(v[i]) < names.size();
+            if (ImGui::ArrowButton("up", ImGuiDir_Up) && i > 0) std::swap(v[i], v[i - 1]), changed = true;
+            ImGui::SameLine();
+            if (ImGui::ArrowButton("down", ImGuiDir_Down) && i + 1 < v.size()) std::swap(v[i], v[i + 1]), changed = true;
+            ImGui::SameLine();
+            const bool remove = ImGui::SmallButton("x");
+            ImGui::SameLine();
+            ImGui::TextUnformatted(known ? names[std::size_t(v[i])] : "?");
+            ImGui::PopID();
+            if (remove) {
+                v.erase(v.begin() + std::ptrdiff_t(i));
+                changed = true;
+                break;
+            }
+        }
+        std::vector<const char*> missing;
+        std::vector<int> indices;
+        for (std::size_t n = 0; n < names.size(); ++n) {
+            if (std::find(v.begin(), v.end(), int(n)) != v.end()) continue;
+            missing.push_back(names[n]);
+            indices.push_back(int(n));
+        }
+        if (!missing.empty() && ImGui::BeginCombo("add", "add...")) {
+            for (std::size_t n = 0; n < missing.size(); ++n) {
+                if (ImGui::Selectable(missing[n])) {
+                    v.push_back(indices[n]);
+                    changed = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+        ImGui::PopID();
+    }
     // A list key: its entries (name and text, clipped so long lists stay cheap) under a node
     // with their count; the selected entry's values are edited as fields, and entries can be
     // added (a copy of the selected one, or a default one) and removed.

@@ -111,6 +111,24 @@ std::string parse(std::string_view t, int& v, Names names) {
     return "";
 }
 
+// An ordered list of distinct names, separated by blanks or commas; empty is allowed.
+using Sequence = std::vector<int>;
+std::string parse(std::string_view t, Sequence& v, Names names) {
+    Sequence x;
+    for (auto pos = t.find_first_not_of(" \t,"); pos != t.npos; pos = t.find_first_not_of(" \t,", pos)) {
+        const auto end = t.find_first_of(" \t,", pos);
+        const auto word = t.substr(pos, end - pos);
+        const auto it = std::ranges::find_if(names, [&](const char* n) { return iequals(word, n); });
+        if (it == names.end()) return "is not accepted ('" + std::string(word) + "')";
+        if (std::ranges::find(x, int(it - names.begin())) != x.end())
+            return "is not accepted ('" + std::string(word) + "' twice)";
+        x.push_back(int(it - names.begin()));
+        pos = end;
+    }
+    v = std::move(x);
+    return "";
+}
+
 // The value as it is written to a file.
 std::string format(bool v) { return v ? "true" : "false"; }
 template <class T>
@@ -120,6 +138,11 @@ template <class T, glm::qualifier Q>
 std::string format(const glm::vec<3, T, Q>& v, T, T) { return exact(v.x) + " " + exact(v.y) + " " + exact(v.z); }
 std::string format(const std::string& v) { return '"' + v + '"'; }  // quoted: leading spaces survive
 std::string format(int v, Names names) { return v >= 0 && size_t(v) < names.size() ? names[v] : std::to_string(v); }
+std::string format(const Sequence& v, Names names) {
+    std::string out;
+    for (int i : v) out += (out.empty() ? "" : " ") + format(i, names);
+    return out;
+}
 
 // What a field accepts, without its unit.
 std::string accepted(bool) { return "true/false, yes/no, on/off, 1/0"; }
@@ -130,8 +153,9 @@ template <class T, glm::qualifier Q>
 std::string accepted(const glm::vec<3, T, Q>&, T lo, T hi) { return "three numbers, each " + range(lo, hi); }
 std::string accepted(const std::string&) { return ""; }
 std::string accepted(int, Names names) { return join(names); }
+std::string accepted(const Sequence&, Names names) { return "names from " + join(names) + ", each at most once"; }
 
-// Routes the eight field kinds to one Derived::visit(info, value, limits...), so each
+// Routes the nine field kinds to one Derived::visit(info, value, limits...), so each
 // visitor below is a single generic function, plus Derived::visitList() for list keys.
 template <class Derived>
 class Visitor : public SettingsVisitor {
@@ -145,6 +169,7 @@ public:
     void field(const FieldInfo& i, std::string& v) override { self().visit(i, v); }
     void choice(const FieldInfo& i, int& v, Names names) override { self().visit(i, v, names); }
     void list(const FieldInfo& i, ListField& l) override { self().visitList(i, l); }
+    void sequence(const FieldInfo& i, Sequence& v, Names names) override { self().visit(i, v, names); }
 
 private:
     Derived& self() { return static_cast<Derived&>(*this); }
@@ -231,7 +256,7 @@ public:
     void visit(const FieldInfo& i, T& v, const L&... limits) {
         std::string hint = accepted(v, limits...);
         if constexpr (std::is_same_v<T, bool>) hint = "true or false";  // the other spellings are for typing
-        if constexpr ((std::is_same_v<L, Names> || ...)) hint = "one of: " + hint;
+        if constexpr ((std::is_same_v<L, Names> || ...) && !std::is_same_v<T, Sequence>) hint = "one of: " + hint;
         if (*i.unit) hint = hint.empty() ? i.unit : i.unit + (", " + hint);
         out += "; " + std::string(i.help) + (hint.empty() ? "" : " (" + hint + ")") + "\n";
         out += i.key + (" = " + format(v, limits...)) + "\n";

@@ -140,22 +140,50 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
+    static constexpr std::array<const char*, 4> effects{"bloom", "exposure", "tonemap", "fxaa"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
+    v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
+               s.order, effects);
 }
 
 void describe(SettingsVisitor& v, ExposureSettings& s) {
-    v.section("postfx.exposure", "exposure");
-    v.field({"enabled", "", "apply exposure compensation"}, s.enabled);
-    v.field({"ev", "stops", "exposure compensation, scale = 2^ev"}, s.ev, -20.0f, 20.0f);
+    static constexpr std::array<const char*, 2> modes{"manual", "auto"};
+    v.section("postfx.exposure", "exposure: manual, or automatic from a log-luminance histogram");
+    v.field({"enabled", "", "apply exposure"}, s.enabled);
+    v.choice({"mode", "", "manual: scale 2^ev; auto: metered average to middle grey (0.18), times 2^ev"}, s.mode, modes);
+    v.field({"ev", "stops", "exposure compensation, scale 2^ev"}, s.ev, -20.0f, 20.0f);
+    v.field({"min_ev", "stops", "auto: lowest metered log2 luminance (darker scenes stay dark)"}, s.min_ev, -20.0f, 20.0f);
+    v.field({"max_ev", "stops", "auto: highest metered log2 luminance (brighter scenes stay bright)"}, s.max_ev, -20.0f, 20.0f);
+    v.field({"low_percent", "%", "auto: darkest share of pixels left out of the average"}, s.low_percent, 0.0f, 99.0f);
+    v.field({"high_percent", "%", "auto: percentile above which pixels are left out of the average"}, s.high_percent, 1.0f, 100.0f);
+    v.field({"speed_up", "1/s", "auto: adaptation rate towards brighter (difference falls by e in 1/rate s)"}, s.speed_up, 0.01f, 100.0f);
+    v.field({"speed_down", "1/s", "auto: adaptation rate towards darker"}, s.speed_down, 0.01f, 100.0f);
 }
 
 void describe(SettingsVisitor& v, TonemapSettings& s) {
-    static constexpr std::array<const char*, 3> ops{"reinhard", "aces", "clamp"};
+    static constexpr std::array<const char*, 4> ops{"reinhard", "aces", "clamp", "agx"};
     v.section("postfx.tonemap", "tone mapping from HDR to display");
     v.field({"enabled", "", "tone map (off: clamp)"}, s.enabled);
-    v.choice({"op", "", "operator"}, s.op, ops);
+    v.choice({"op", "", "operator: extended Reinhard on luminance, ACES fit (Narkowicz), clamp, AgX (Sobotka)"}, s.op, ops);
     v.field({"white", "", "linear value mapped to white (reinhard)"}, s.white, 0.01f, 1000.0f);
+}
+
+void describe(SettingsVisitor& v, BloomSettings& s) {
+    v.section("postfx.bloom", "bloom: 13-tap downsample chain and tent upsample (Jimenez 2014)");
+    v.field({"enabled", "", "add bloom"}, s.enabled);
+    v.field({"intensity", "", "share of the blurred image in the result"}, s.intensity, 0.0f, 1.0f);
+    v.field({"radius", "", "weight of each coarser level while upsampling: 0 tight, 1 wide"}, s.radius, 0.0f, 1.0f);
+    v.field({"levels", "", "downsample levels, each half the size of the one above"}, s.levels, 1, 10);
+    v.field({"clamp", "", "highlights clamped to this before blurring (NaN and Inf count as 0)"}, s.clamp, 1.0f, 65504.0f);
+}
+
+void describe(SettingsVisitor& v, FxaaSettings& s) {
+    v.section("postfx.fxaa", "FXAA anti-aliasing on the display image");
+    v.field({"enabled", "", "run FXAA"}, s.enabled);
+    v.field({"edge_threshold", "", "smallest local luma contrast treated as an edge"}, s.edge_threshold, 0.01f, 1.0f);
+    v.field({"edge_threshold_min", "", "luma contrast below this is never an edge (dark areas)"}, s.edge_threshold_min, 0.0f, 1.0f);
+    v.field({"subpixel", "", "sub-pixel aliasing removal, 0 off, 1 softest"}, s.subpixel, 0.0f, 1.0f);
 }
 
 }  // namespace
@@ -177,6 +205,8 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.postfx);
     describe(v, s.exposure);
     describe(v, s.tonemap);
+    describe(v, s.bloom);
+    describe(v, s.fxaa);
 }
 
 }  // namespace vista

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <vector>
 
 namespace vista {
 
@@ -148,21 +149,57 @@ struct SkySettings {
     glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< unused by the physical sky; old scenes load
 };
 
+//! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa };
+
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
+    //! Effects in the order they run on the image. Effects before `tonemap` see linear HDR,
+    //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
+    //! chain still ends with a clamp and the sRGB encoding.
+    std::vector<PostEffect> order{PostEffect::Bloom, PostEffect::Exposure, PostEffect::Tonemap, PostEffect::Fxaa};
 };
 
+enum class ExposureMode : int { Manual, Auto };
+
+//! Exposure: a scale 2^ev (manual), or one that brings the metered average luminance to middle
+//! grey (0.18) times 2^ev (auto), metered from a log-luminance histogram and adapted over time.
 struct ExposureSettings {
     bool enabled = true;
-    float ev = 0.0f;  //!< exposure compensation in stops (scale = 2^ev)
+    ExposureMode mode = ExposureMode::Auto;
+    float ev = 0.0f;              //!< stops of compensation (manual: scale = 2^ev), -20..20
+    float min_ev = -16.0f;        //!< auto: lowest metered log2 luminance (darker scenes stay darker), -20..20
+    float max_ev = 16.0f;         //!< auto: highest metered log2 luminance, -20..20
+    float low_percent = 40.0f;    //!< auto: darkest pixels left out of the average, % of the histogram, 0..99
+    float high_percent = 95.0f;   //!< auto: pixels above this percentile left out (highlights), 1..100
+    float speed_up = 3.0f;        //!< auto: adaptation rate towards a brighter scene, stops settle by e per 1/rate s, 0.01..100
+    float speed_down = 1.0f;      //!< auto: adaptation rate towards a darker scene, 1/s, 0.01..100
 };
 
-enum class Tonemapper : int { Reinhard, Aces, Clamp };
+enum class Tonemapper : int { Reinhard, Aces, Clamp, Agx };
 
 struct TonemapSettings {
     bool enabled = true;
     Tonemapper op = Tonemapper::Aces;
     float white = 4.0f;  //!< linear value that maps to white (Reinhard)
+};
+
+//! Bloom after Jimenez 2014: a 13-tap downsample chain (Karis average on the first level),
+//! tent-filtered upsampling back up, blended into the image.
+struct BloomSettings {
+    bool enabled = true;
+    float intensity = 0.04f;  //!< share of the blurred image in the result (mix), 0..1
+    float radius = 0.7f;      //!< weight of each coarser level while upsampling: 0 tight, 1 wide, 0..1
+    int levels = 5;           //!< downsample levels (each half the size), 1..10
+    float clamp = 1000.0f;    //!< highlights are clamped to this before blurring (NaN/Inf to 0), 1..65504
+};
+
+//! FXAA 3.11-style anti-aliasing on the display image (luma edges).
+struct FxaaSettings {
+    bool enabled = true;
+    float edge_threshold = 0.125f;     //!< smallest local contrast treated as an edge, 0.01..1
+    float edge_threshold_min = 0.0312f;//!< contrast below this (dark areas) is never an edge, 0..1
+    float subpixel = 0.75f;            //!< sub-pixel aliasing removal (0 off, 1 soft), 0..1
 };
 
 struct Settings {
@@ -176,6 +213,8 @@ struct Settings {
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]
     TonemapSettings tonemap;    // [postfx.tonemap]
+    BloomSettings bloom;        // [postfx.bloom]
+    FxaaSettings fxaa;          // [postfx.fxaa]
 };
 
 // Lists every section and field of s to v, in file order.

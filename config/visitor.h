@@ -72,6 +72,9 @@ public:
     // A list key: info.key is the PREFIX of the section's PREFIX.NAME keys, info.help says the
     // format of their values.
     virtual void list(const FieldInfo& info, ListField& entries) = 0;
+    // An ordered list of distinct names from names (the post chain's order), as indices into
+    // names. Visitors that have no use for it may ignore it.
+    virtual void sequence(const FieldInfo&, std::vector<int>&, std::span<const char* const>) {}
 
     // Enum-typed convenience over choice(): the enum's values must be 0..names.size()-1.
     template <class Enum>
@@ -80,6 +83,16 @@ public:
         int index = static_cast<int>(value);
         choice(info, index, names);
         value = static_cast<Enum>(index);
+    }
+    // Enum-typed convenience over sequence().
+    template <class Enum>
+    void sequence(const FieldInfo& info, std::vector<Enum>& value, std::span<const char* const> names) {
+        static_assert(sizeof(Enum) == sizeof(int));
+        std::vector<int> indices;
+        for (Enum e : value) indices.push_back(static_cast<int>(e));
+        sequence(info, indices, names);
+        value.clear();
+        for (int i : indices) value.push_back(static_cast<Enum>(i));
     }
 };
 

@@ -1,7 +1,7 @@
 // Exposure, tone mapping and sRGB encoding in one full-screen pass.
 #include "postfx/tonemap.h"
 
-#include <cmath>
+#include "postfx/postfx_bindings.h"
 
 namespace vista {
 namespace {
@@ -10,43 +10,53 @@ const char* operatorDefine(Tonemapper op) {
     switch (op) {
         case Tonemapper::Reinhard: return "TONEMAP_REINHARD";
         case Tonemapper::Aces: return "TONEMAP_ACES";
+        case Tonemapper::Agx: return "TONEMAP_AGX";
         case Tonemapper::Clamp: break;
     }
     return "TONEMAP_CLAMP";
+}
+
+std::vector<std::string> defines(Tonemapper op, bool automatic) {
+    std::vector<std::string> d{operatorDefine(op)};
+    if (automatic) d.push_back("EXPOSURE_AUTO");
+    return d;
 }
 
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> tonemapPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
-    for (Tonemapper op : {Tonemapper::Reinhard, Tonemapper::Aces, Tonemapper::Clamp})
-        programs.push_back({"postfx/shaders/tonemap.glsl", {operatorDefine(op)}});
+    for (Tonemapper op : {Tonemapper::Reinhard, Tonemapper::Aces, Tonemapper::Clamp, Tonemapper::Agx})
+        for (bool automatic : {false, true}) programs.push_back({"postfx/shaders/tonemap.glsl", defines(op, automatic)});
     return programs;
 }
 
-TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s) {
+TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, Tonemapper op, float white,
+                             const ExposureInput& exposure, const char* name) {
     struct Data {
         TextureHandle hdr, ldr;
+        BufferHandle exposure;
     };
-    bool chain = s.postfx.enabled;
-    Tonemapper op = chain && s.tonemap.enabled ? s.tonemap.op : Tonemapper::Clamp;
-    float exposure = chain && s.exposure.enabled ? std::exp2(s.exposure.ev) : 1.0f;
-    float white = s.tonemap.white;
-    const Data& d = graph.addPass<Data>("postfx.tonemap",
+    const bool automatic = exposure.state.valid();
+    const float manual = exposure.manual;
+    const Data& d = graph.addPass<Data>(name,
         [&](PassBuilder& b, Data& data) {
             data.hdr = b.read(hdr);
+            if (automatic) data.exposure = b.read(exposure.state);
             TextureDesc desc = b.desc(hdr);
             desc.format = PixelFormat::RGBA8;
+            desc.levels = 1;
             data.ldr = b.write(b.create("ldr", desc));
         },
-        [&rc, op, exposure, white](const Data& data, PassContext& ctx) {
+        [&rc, op, manual, white, automatic](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.ldr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.ldr)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/tonemap.glsl", {operatorDefine(op)})->id();
+            GLuint program = rc.shaders.get("postfx/shaders/tonemap.glsl", defines(op, automatic))->id();
             glUseProgram(program);
-            glProgramUniform1f(program, 0, exposure);
+            glProgramUniform1f(program, 0, manual);
             glProgramUniform1f(program, 1, white);
             glBindTextureUnit(0, ctx.texture(data.hdr));
+            if (automatic) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kExposureBinding, ctx.buffer(data.exposure));
             drawFullscreen(rc);
         });
     return d.ldr;

@@ -1,14 +1,18 @@
-// "postfx.tonemap": the end of the HDR pipeline. Applies exposure, a tone-mapping operator
-// (a #define variant per operator) and the sRGB transfer function; writes RGBA8 holding
-// sRGB-encoded values. With [postfx] or [postfx.tonemap] disabled it only clamps and encodes.
+// "postfx.tonemap": the end of the HDR pipeline. Applies a pending exposure, a tone-mapping
+// operator (a #define variant per operator) and the sRGB transfer function; writes RGBA8
+// holding sRGB-encoded values. "postfx.encode" is the same pass with the clamp operator, for a
+// chain without an enabled tone map (or with [postfx] disabled).
 #pragma once
 
 #include "config/settings.h"
+#include "postfx/exposure.h"
 #include "renderer/render_context.h"
 
 namespace vista {
 
-TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s);
+// name: "postfx.tonemap" or "postfx.encode". white: Reinhard's white point.
+TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, Tonemapper op, float white,
+                             const ExposureInput& exposure, const char* name = "postfx.tonemap");
 
 // Every program variant this module uses (for up-front compilation and tests).
 std::vector<std::pair<std::string, std::vector<std::string>>> tonemapPrograms();

@@ -1,9 +1,9 @@
 // "lights.cull": builds the per-tile (LIGHTS_TILED) or per-cluster (LIGHTS_CLUSTERED) light
-// lists on the GPU, one workgroup of 16 x 16 threads per screen tile (16 or 32 px).
+// lists on the GPU, one workgroup of 8 x 8 threads per screen tile (16 or 32 px).
 //   1. The tile's depth range from its pixels (sky pixels ignored); clustered also marks the
 //      depth slices its pixels fall in.
 //   2. Every light's bounding sphere (view space) against the tile's frustum, four side planes
-//      and the depth range, 256 lights at a time; hits are compacted in light order (so lists,
+//      and the depth range, 64 lights at a time; hits are compacted in light order (so lists,
 //      and images, do not depend on thread timing).
 //   3. Tiled: the tile's list goes to a slot taken from a pool (atomic counter).
 //      Clustered: for each occupied slice (one thread each), the tile's lights that touch the
@@ -21,7 +21,8 @@
 #include "brdf.glsl"
 #include "lights.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+const uint kSide = 8u, kThreads = kSide * kSide;  // threads per tile
+layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(std430, binding = BINDING_LIGHT_SPHERES) readonly buffer Spheres { vec4 u_spheres[]; };  // view space centre, radius
 layout(std430, binding = BINDING_COUNTERS) buffer Overflow { uint u_overflow; };
@@ -31,7 +32,7 @@ const uint kSharedCap = 4096u;  // tile list capacity in shared memory (16 KiB)
 shared uint s_depth_min, s_depth_max;  // float bits of view depths (positive: ordered as uints)
 shared bool s_sky;                     // a pixel of the tile sees the sky (depth 0)
 shared uint s_slices[8];               // occupied slices (clustered)
-shared uint s_mask[8];                 // hits of the current 256 lights
+shared uint s_mask[kThreads / 32u];    // hits of the current kThreads lights
 shared uint s_count;                   // tile list length (may exceed the capacity)
 shared uint s_list[kSharedCap];
 shared uint s_offset;                  // the tile list's slot in the pool (tiled)
@@ -57,15 +58,17 @@ void main() {
     }
     if (t < 8u) s_slices[t] = 0u;
 #ifdef LIGHTS_CLUSTERED
-    s_slice_min[t] = floatBitsToUint(3.0e38);
-    s_slice_max[t] = 0u;
+    for (uint k = t; k < 256u; k += kThreads) {
+        s_slice_min[k] = floatBitsToUint(3.0e38);
+        s_slice_max[k] = 0u;
+    }
 #endif
     barrier();
 
     // 1. Depth range (and occupied slices) of the tile's pixels; each thread takes
-    //    (tile_px / 16)^2 of them.
+    //    (tile_px / kSide)^2 of them.
     ivec2 size = textureSize(u_depth, 0);
-    uint per = tile_px / 16u;
+    uint per = tile_px / kSide;
     for (uint j = 0u; j < per * per; ++j) {
         ivec2 p = ivec2(tile * tile_px + gl_LocalInvocationID.xy * per + uvec2(j % per, j / per));
         if (any(greaterThanEqual(p, size))) continue;
@@ -107,8 +110,8 @@ void main() {
     // 2. Lights against the tile, compacted in light order.
     uint light_count = empty ? 0u : u_grid.x;
     uint cell_cap = min(u_grid2.y, kSharedCap);
-    for (uint base = 0u; base < light_count; base += 256u) {
-        if (t < 8u) s_mask[t] = 0u;
+    for (uint base = 0u; base < light_count; base += kThreads) {
+        if (t < kThreads / 32u) s_mask[t] = 0u;
         barrier();
         uint i = base + t;
         bool hit = false;
@@ -129,7 +132,7 @@ void main() {
         barrier();
         if (t == 0u) {
             uint n = 0u;
-            for (uint w = 0u; w < 8u; ++w) n += bitCount(s_mask[w]);
+            for (uint w = 0u; w < kThreads / 32u; ++w) n += bitCount(s_mask[w]);
             s_count += n;
         }
         barrier();
@@ -150,66 +153,67 @@ void main() {
     }
     barrier();
     if (s_offset != kOverflowCount)
-        for (uint j = t; j < s_count; j += 256u) u_light_indices[s_offset + j] = s_list[j];
+        for (uint j = t; j < s_count; j += kThreads) u_light_indices[s_offset + j] = s_list[j];
 #else
-    // 3. One thread per slice: the tile's lights that touch the cluster's view-space box.
+    // 3. A thread per slice (thread t takes slices t, t + kThreads, ...): the tile's lights that
+    //    touch the cluster's view-space box.
     uint slices = u_grid2.x;
-    uint k = t;
-    if (k >= slices) return;
-    uint cell = tile.x + u_grid.z * (tile.y + u_grid.w * k);
+    for (uint k = t; k < slices; k += kThreads) {
+        uint cell = tile.x + u_grid.z * (tile.y + u_grid.w * k);
 #ifdef LIGHTS_FORWARD
-    float slice_near = k == 0u ? 0.0 : u_slices.x * exp(float(k) * u_slices.z);
-    bool occupied = slice_near <= zmax;
+        float slice_near = k == 0u ? 0.0 : u_slices.x * exp(float(k) * u_slices.z);
+        bool occupied = slice_near <= zmax;
 #else
-    bool occupied = ((s_slices[k >> 5] >> (k & 31u)) & 1u) != 0u;
+        bool occupied = ((s_slices[k >> 5] >> (k & 31u)) & 1u) != 0u;
 #endif
-    if (!occupied || empty) {
-        u_light_cells[cell] = uvec2(0u, 0u);
-        return;
-    }
-    if (s_count > kSharedCap) {  // the tile list itself overflowed
-        u_light_cells[cell] = uvec2(0u, kOverflowCount);
-        atomicAdd(u_overflow, 1u);
-        return;
-    }
-    // The depth range of the tile's pixels in this slice (within the slice's bounds
-    // near_k = near_0 * ratio^k by construction), widened against rounding.
+        if (!occupied || empty) {
+            u_light_cells[cell] = uvec2(0u, 0u);
+            continue;
+        }
+        if (s_count > kSharedCap) {  // the tile list itself overflowed
+            u_light_cells[cell] = uvec2(0u, kOverflowCount);
+            atomicAdd(u_overflow, 1u);
+            continue;
+        }
+        // The depth range of the tile's pixels in this slice (within the slice's bounds
+        // near_k = near_0 * ratio^k by construction), widened against rounding.
 #ifdef LIGHTS_FORWARD
-    // Forward: the whole slice in front of the tile's farthest opaque pixel.
-    float dn = slice_near * (1.0 - 1e-4);
-    float df = min(k + 1u >= slices ? kFar : u_slices.x * exp(float(k + 1u) * u_slices.z) * (1.0 + 1e-4), zmax);
+        // Forward: the whole slice in front of the tile's farthest opaque pixel.
+        float dn = slice_near * (1.0 - 1e-4);
+        float df = min(k + 1u >= slices ? kFar : u_slices.x * exp(float(k + 1u) * u_slices.z) * (1.0 + 1e-4), zmax);
 #else
-    float dn = uintBitsToFloat(s_slice_min[k]) * (1.0 - 1e-4);
-    float df = uintBitsToFloat(s_slice_max[k]) * (1.0 + 1e-4);
+        float dn = uintBitsToFloat(s_slice_min[k]) * (1.0 - 1e-4);
+        float df = uintBitsToFloat(s_slice_max[k]) * (1.0 + 1e-4);
 #endif
-    vec3 box_min = vec3(min(slopes.x * dn, slopes.x * df), min(slopes.z * dn, slopes.z * df), -df);
-    vec3 box_max = vec3(max(slopes.y * dn, slopes.y * df), max(slopes.w * dn, slopes.w * df), -dn);
-    uint count = 0u;
-    for (uint j = 0u; j < s_count; ++j) {
-        vec4 s = u_spheres[s_list[j]];
-        float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
-        vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
-        if (dot(d, d) <= r * r) ++count;
+        vec3 box_min = vec3(min(slopes.x * dn, slopes.x * df), min(slopes.z * dn, slopes.z * df), -df);
+        vec3 box_max = vec3(max(slopes.y * dn, slopes.y * df), max(slopes.w * dn, slopes.w * df), -dn);
+        uint count = 0u;
+        for (uint j = 0u; j < s_count; ++j) {
+            vec4 s = u_spheres[s_list[j]];
+            float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
+            vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
+            if (dot(d, d) <= r * r) ++count;
+        }
+        uint offset = 0u;
+        bool overflow = count > cell_cap;
+        if (!overflow && count > 0u) {
+            offset = atomicAdd(u_pool_used, count);  // may pass the capacity: the demand is read back
+            overflow = offset + count > u_grid2.z;
+        }
+        if (overflow) {
+            u_light_cells[cell] = uvec2(0u, kOverflowCount);
+            atomicAdd(u_overflow, 1u);
+            continue;
+        }
+        uint n = 0u;
+        for (uint j = 0u; j < s_count && n < count; ++j) {
+            vec4 s = u_spheres[s_list[j]];
+            float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
+            vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
+            if (dot(d, d) <= r * r) u_light_indices[offset + n++] = s_list[j];
+        }
+        u_light_cells[cell] = uvec2(offset, count);
     }
-    uint offset = 0u;
-    bool overflow = count > cell_cap;
-    if (!overflow && count > 0u) {
-        offset = atomicAdd(u_pool_used, count);  // may pass the capacity: the demand is read back
-        overflow = offset + count > u_grid2.z;
-    }
-    if (overflow) {
-        u_light_cells[cell] = uvec2(0u, kOverflowCount);
-        atomicAdd(u_overflow, 1u);
-        return;
-    }
-    uint n = 0u;
-    for (uint j = 0u; j < s_count && n < count; ++j) {
-        vec4 s = u_spheres[s_list[j]];
-        float r = s.w * (1.0 + 1e-4) + 1e-4 * length(s.xyz);
-        vec3 d = s.xyz - clamp(s.xyz, box_min, box_max);
-        if (dot(d, d) <= r * r) u_light_indices[offset + n++] = s_list[j];
-    }
-    u_light_cells[cell] = uvec2(offset, count);
 #endif
 }
 #endif

@@ -1,0 +1,70 @@
+// The chain keeps one pending exposure: exposure only meters, and the next pass that reads
+// the image applies it (the tone map does so for free; anything else gets an apply pass).
+#include "postfx/chain.h"
+
+#include "postfx/bloom.h"
+#include "postfx/fxaa.h"
+#include "postfx/tonemap.h"
+
+namespace vista {
+
+TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s) {
+    const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
+    const bool reset = !has_time_ || dt < 0.0;
+    last_time_s_ = rc.time_s;
+    has_time_ = true;
+
+    TextureHandle image = hdr;
+    bool display = false;  // after the tone map: RGBA8 sRGB-encoded
+    ExposureInput exposure;
+    bool uses_auto = false;
+    auto flush = [&] {
+        if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
+        exposure = {};
+    };
+    const std::vector<PostEffect> none;
+    for (PostEffect effect : s.postfx.enabled ? s.postfx.order : none) {
+        switch (effect) {
+            case PostEffect::Bloom:
+                if (!s.bloom.enabled) break;
+                flush();
+                image = addBloomPasses(graph, rc, image, s.bloom);
+                break;
+            case PostEffect::Exposure:
+                if (!s.exposure.enabled) break;
+                flush();
+                if (s.exposure.mode == ExposureMode::Auto) {
+                    if (!auto_exposure_) auto_exposure_ = std::make_unique<AutoExposure>();
+                    exposure = auto_exposure_->addPasses(graph, rc, image, s.exposure, dt, reset);
+                    uses_auto = true;
+                } else {
+                    exposure = manualExposure(s.exposure);
+                }
+                break;
+            case PostEffect::Tonemap:
+                if (!s.tonemap.enabled || display) break;
+                image = addTonemapPass(graph, rc, image, s.tonemap.op, s.tonemap.white, exposure);
+                exposure = {};
+                display = true;
+                break;
+            case PostEffect::Fxaa:
+                if (!s.fxaa.enabled) break;
+                flush();
+                image = addFxaaPass(graph, rc, image, s.fxaa, !display);
+                break;
+        }
+    }
+    if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
+    if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
+    flush();
+    return image;
+}
+
+std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
+    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+    for (auto list : {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms()})
+        programs.insert(programs.end(), list.begin(), list.end());
+    return programs;
+}
+
+}  // namespace vista

@@ -1,0 +1,37 @@
+// The post-processing chain ([postfx] order): each enabled effect adds its passes in the
+// listed order, on a handle to the current image (Filament's PostProcessManager style),
+// starting from the scene's linear HDR image and ending with the display image (RGBA8,
+// sRGB-encoded). A disabled effect adds no pass and no target; a chain without an enabled
+// tone map still ends with "postfx.encode" (clamp and sRGB).
+#pragma once
+
+#include "config/settings.h"
+#include "postfx/exposure.h"
+#include "renderer/render_context.h"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vista {
+
+class PostChain {
+public:
+    // Adds the chain's passes for hdr; returns the display image. rc.time_s drives the
+    // exposure adaptation: its change since the last call is the frame time (the first call,
+    // or time going backwards, takes the metered exposure at once).
+    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s);
+    // Auto exposure's state, while auto exposure is in use (null otherwise).
+    const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
+
+private:
+    std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
+    double last_time_s_ = 0.0;
+    bool has_time_ = false;
+};
+
+// Every program variant the chain can use.
+std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms();
+
+}  // namespace vista

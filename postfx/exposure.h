@@ -1,0 +1,48 @@
+// Exposure: a manual scale (2^ev), or auto exposure metered from a log-luminance histogram
+// ("postfx.exposure.histogram", a compute pass) and adapted over time
+// ("postfx.exposure.adapt", into a persistent state buffer). The scale is applied by the next
+// pass of the chain: the tone map, or "postfx.exposure.apply" when another effect comes first.
+#pragma once
+
+#include "config/settings.h"
+#include "postfx/postfx_bindings.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vista {
+
+// An exposure the next pass multiplies its input by: state (auto) when valid, else manual.
+struct ExposureInput {
+    bool pending = false;
+    float manual = 1.0f;
+    BufferHandle state;
+};
+
+// The adapted exposure, kept across frames.
+class AutoExposure {
+public:
+    AutoExposure();
+    // Meters image and adapts: dt_s is the time since the last metered frame; reset takes the
+    // metered value at once (first frame, time jumped back).
+    ExposureInput addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const ExposureSettings& s,
+                            double dt_s, bool reset);
+    // Reads the state back from the GPU (tests, panel; stalls).
+    postfx::ExposureState read() const;
+
+private:
+    gl::Buffer state_;
+};
+
+ExposureInput manualExposure(const ExposureSettings& s);
+
+// "postfx.exposure.apply": image times the pending exposure, same format.
+TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
+                                   const ExposureInput& exposure);
+
+std::vector<std::pair<std::string, std::vector<std::string>>> exposurePrograms();
+
+}  // namespace vista

@@ -1,0 +1,333 @@
+// Post effects on small synthetic inputs under OSMesa: the chain's order and culling, auto
+// exposure's metering and adaptation, tone maps, bloom and FXAA, each on an image made here
+// (imported into a frame graph) rather than on a rendered scene.
+#include "app/frame.h"
+#include "app/scene.h"
+#include "postfx/bloom.h"
+#include "postfx/chain.h"
+#include "postfx/fxaa.h"
+#include "gl_fixture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace vista;
+
+namespace {
+
+// Runs post passes on an RGBA32F image (rows bottom first, as GL stores them) and reads the
+// result back as floats (RGBA8 results in [0, 1]).
+struct Bench {
+    ShaderLibrary shaders{vistaRoot()};
+    GlDevice device;
+    TransientPool pool{device};
+    gl::VertexArray vao = gl::createVertexArray("postfx test");
+    PostChain chain;
+    std::vector<std::string> executed;
+
+    template <class AddPasses>
+    std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add) {
+        gl::Texture input = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "postfx test input");
+        glTextureSubImage2D(input.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+        ViewParams view;
+        view.width = w, view.height = h;
+        RenderContext rc{shaders, device, vao.id(), view, ViewMatrices{}, 0, time_s};
+        FrameGraph graph;
+        TextureHandle in = graph.importTexture("input", {w, h, PixelFormat::RGBA32F}, input.id());
+        TextureHandle out = add(graph, rc, in);
+        struct Data {
+            TextureHandle t;
+        };
+        std::vector<float> result;
+        graph.addPass<Data>("test.readback",
+            [&](PassBuilder& b, Data& d) {
+                d.t = b.read(out);
+                b.sideEffect();
+            },
+            [&result](const Data& d, PassContext& ctx) {
+                const TextureDesc& desc = ctx.desc(d.t);
+                result.resize(std::size_t(desc.width) * std::size_t(desc.height) * 4);
+                glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(result.size() * sizeof(float)),
+                                  result.data());
+            });
+        graph.compile();
+        graph.execute(pool, nullptr);
+        pool.endFrame();
+        executed = graph.executedPasses();
+        return result;
+    }
+    std::vector<float> chainRun(const std::vector<float>& rgba, int w, int h, const Settings& s, double time_s = 0.0) {
+        return run(rgba, w, h, time_s, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+            return chain.addPasses(g, rc, in, s);
+        });
+    }
+};
+
+std::vector<float> uniform(int w, int h, float value) {
+    std::vector<float> v(std::size_t(w) * std::size_t(h) * 4, value);
+    for (std::size_t i = 3; i < v.size(); i += 4) v[i] = 1.0f;
+    return v;
+}
+
+void setPixel(std::vector<float>& v, int w, int x, int y, float value) {
+    for (int c = 0; c < 3; ++c) v[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4 + std::size_t(c)] = value;
+}
+
+float pixel(const std::vector<float>& v, int w, int x, int y, int c = 0) {
+    return v[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4 + std::size_t(c)];
+}
+
+bool allFinite(const std::vector<float>& v) {
+    return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
+}
+
+float srgb(float linear) {
+    return linear <= 0.0031308f ? linear * 12.92f : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+std::vector<std::string> postfxPasses(const std::vector<std::string>& executed) {
+    std::vector<std::string> out;
+    for (const auto& p : executed)
+        if (p.rfind("postfx.", 0) == 0) out.push_back(p);
+    return out;
+}
+
+bool has(const std::vector<std::string>& passes, const std::string& prefix) {
+    return std::any_of(passes.begin(), passes.end(), [&](const std::string& p) { return p.rfind(prefix, 0) == 0; });
+}
+
+}  // namespace
+
+TEST_CASE("gl: postfx programs compile") {
+    test::glContext();
+    ShaderLibrary shaders(vistaRoot());
+    for (const auto& [file, defines] : postfxPrograms()) {
+        INFO(file);
+        CHECK(shaders.get(file, defines) != nullptr);
+        CHECK(shaders.lastError() == "");
+    }
+}
+
+TEST_CASE("gl: the post chain runs in [postfx] order, disabled effects add no pass, an empty chain still encodes") {
+    test::glContext();
+    Bench bench;
+    Settings s;
+    const std::vector<float> image = uniform(32, 18, 0.5f);
+    bench.chainRun(image, 32, 18, s);
+    std::vector<std::string> passes = postfxPasses(bench.executed);
+    REQUIRE(!passes.empty());
+    CHECK(passes.front() == "postfx.bloom.down1");
+    CHECK(passes.back() == "postfx.fxaa");
+    const auto at = [&](const std::string& name) { return std::find(passes.begin(), passes.end(), name) - passes.begin(); };
+    CHECK(at("postfx.bloom.composite") < at("postfx.exposure.histogram"));
+    CHECK(at("postfx.exposure.adapt") < at("postfx.tonemap"));
+    CHECK_FALSE(has(passes, "postfx.exposure.apply"));  // the tone map applies it
+
+    s.postfx.order = {PostEffect::Fxaa, PostEffect::Exposure, PostEffect::Bloom, PostEffect::Tonemap};
+    bench.chainRun(image, 32, 18, s);
+    passes = postfxPasses(bench.executed);
+    CHECK(passes.front() == "postfx.fxaa");
+    CHECK(at("postfx.exposure.adapt") < at("postfx.exposure.apply"));  // bloom comes between
+    CHECK(at("postfx.exposure.apply") < at("postfx.bloom.down1"));
+    CHECK(passes.back() == "postfx.tonemap");
+
+    s = Settings{};
+    s.bloom.enabled = false;
+    s.fxaa.enabled = false;
+    s.exposure.mode = ExposureMode::Manual;
+    bench.chainRun(image, 32, 18, s);
+    passes = postfxPasses(bench.executed);
+    CHECK(passes == std::vector<std::string>{"postfx.tonemap"});
+    CHECK(bench.chain.autoExposure() == nullptr);  // nothing kept for an effect that is off
+
+    s.postfx.order.clear();
+    std::vector<float> out = bench.chainRun(image, 32, 18, s);
+    CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.encode"});
+    CHECK(pixel(out, 32, 5, 5) == doctest::Approx(srgb(0.5f)).epsilon(0.01));
+
+    s = Settings{};
+    s.postfx.enabled = false;
+    bench.chainRun(image, 32, 18, s);
+    CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.encode"});
+}
+
+TEST_CASE("gl: auto exposure brings a uniform image to middle grey and ignores NaN and Inf pixels") {
+    test::glContext();
+    Bench bench;
+    Settings s;
+    s.postfx.order = {PostEffect::Exposure};  // then the clamp encode: the output is 0.18 encoded
+    const float luminance = 3.7f;
+    std::vector<float> image = uniform(40, 24, luminance);
+    std::vector<float> out = bench.chainRun(image, 40, 24, s);
+    REQUIRE(bench.chain.autoExposure());
+    const postfx::ExposureState clean = bench.chain.autoExposure()->read();
+    // Metering resolves half a histogram bin: 48 / 254 / 2 stops, 6.8 %.
+    const double half_bin = std::exp2(48.0 / 254.0 / 2.0) - 1.0;
+    CHECK(clean.valid == 1.0f);
+    CHECK(clean.scale * luminance == doctest::Approx(0.18).epsilon(half_bin));
+    CHECK(pixel(out, 40, 20, 12) == doctest::Approx(srgb(0.18f)).epsilon(0.05));
+
+    for (int y = 0; y < 24; y += 3)
+        for (int x = y % 5; x < 40; x += 5)
+            setPixel(image, 40, x, y, (x + y) % 2 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity());
+    Bench again;
+    again.chainRun(image, 40, 24, s);
+    const postfx::ExposureState dirty = again.chain.autoExposure()->read();
+    CHECK(dirty.scale == clean.scale);
+    CHECK(std::isfinite(dirty.adapted_log2));
+
+    s.exposure.ev = 1.0f;  // compensation doubles the scale
+    Bench brighter;
+    brighter.chainRun(uniform(40, 24, luminance), 40, 24, s);
+    CHECK(brighter.chain.autoExposure()->read().scale == doctest::Approx(2.0f * clean.scale).epsilon(1e-5));
+
+    s.exposure.ev = 0.0f;
+    s.exposure.max_ev = -2.0f;  // the meter stops at 2^-2: a brighter scene stays brighter
+    Bench clamped;
+    clamped.chainRun(uniform(40, 24, luminance), 40, 24, s);
+    CHECK(clamped.chain.autoExposure()->read().scale == doctest::Approx(0.18f * 4.0f).epsilon(1e-5));
+}
+
+TEST_CASE("gl: auto exposure adapts exponentially in time, independent of the frame rate") {
+    test::glContext();
+    Settings s;
+    s.postfx.order = {PostEffect::Exposure};
+    s.exposure.speed_up = 1.5f;
+    const std::vector<float> dark = uniform(16, 16, 1.0f), bright = uniform(16, 16, 16.0f);
+    Bench fine, coarse;
+    fine.chainRun(dark, 16, 16, s, 10.0);
+    coarse.chainRun(dark, 16, 16, s, 10.0);
+    const float start = fine.chain.autoExposure()->read().adapted_log2;
+    for (int i = 1; i <= 10; ++i) fine.chainRun(bright, 16, 16, s, 10.0 + 0.1 * i);
+    coarse.chainRun(bright, 16, 16, s, 11.0);
+    const postfx::ExposureState a = fine.chain.autoExposure()->read(), b = coarse.chain.autoExposure()->read();
+    CHECK(a.adapted_log2 == doctest::Approx(b.adapted_log2).epsilon(1e-4));
+    const float expected = a.target_log2 + (start - a.target_log2) * std::exp(-1.5f);
+    CHECK(a.adapted_log2 == doctest::Approx(expected).epsilon(1e-4));
+    CHECK(a.adapted_log2 > start);
+    CHECK(a.adapted_log2 < a.target_log2);
+
+    coarse.chainRun(bright, 16, 16, s, 0.0);  // time went back (a restart): take the target at once
+    CHECK(coarse.chain.autoExposure()->read().adapted_log2 == coarse.chain.autoExposure()->read().target_log2);
+}
+
+TEST_CASE("gl: every tone map is monotonic and maps 0 to 0") {
+    test::glContext();
+    const int w = 256;
+    std::vector<float> ramp = uniform(w, 1, 0.0f);
+    for (int x = 1; x < w; ++x) setPixel(ramp, w, x, 0, float(1e-4 * std::pow(1e8, double(x - 1) / double(w - 2))));
+    for (Tonemapper op : {Tonemapper::Reinhard, Tonemapper::Aces, Tonemapper::Clamp, Tonemapper::Agx}) {
+        INFO("operator " << int(op));
+        Bench bench;
+        Settings s;
+        s.postfx.order = {PostEffect::Tonemap};
+        s.tonemap.op = op;
+        std::vector<float> out = bench.chainRun(ramp, w, 1, s);
+        for (int c = 0; c < 3; ++c) {
+            CHECK(pixel(out, w, 0, 0, c) == 0.0f);
+            for (int x = 1; x < w; ++x) CHECK(pixel(out, w, x, 0, c) >= pixel(out, w, x - 1, 0, c));
+            CHECK(pixel(out, w, w - 1, 0, c) > 0.95f);  // 1e4 is white
+            CHECK(pixel(out, w, 1, 0, c) < 0.01f);      // 1e-4 is black
+        }
+        // Middle grey lands in the middle third of the display range.
+        std::vector<float> grey = bench.chainRun(uniform(4, 4, 0.18f), 4, 4, s);
+        CHECK(grey[0] > 0.3f);
+        CHECK(grey[0] < 0.7f);
+    }
+}
+
+TEST_CASE("gl: bloom of a single hot pixel is bounded, symmetric and conserves energy") {
+    test::glContext();
+    Bench bench;
+    BloomSettings b;
+    b.intensity = 0.5f;
+    b.levels = 5;  // 63 -> 31 -> 15 -> 7 -> 3 -> 1: the centre pixel stays a texel centre
+    const int n = 63, c = 31;
+    std::vector<float> image = uniform(n, n, 0.0f);
+    setPixel(image, n, c, c, 100.0f);
+    std::vector<float> out = bench.run(image, n, n, 0.0, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+        return addBloomPasses(g, rc, in, b);
+    });
+    REQUIRE(allFinite(out));
+    double sum = 0.0;
+    float peak = 0.0f;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const float v = pixel(out, n, x, y);
+            sum += v;
+            peak = std::max(peak, v);
+            CHECK(v >= 0.0f);
+        }
+    CHECK(peak <= 100.0f);
+    CHECK(pixel(out, n, c, c) == peak);
+    CHECK(pixel(out, n, c + 1, c) > 0.0f);   // it spreads
+    // Mixing never adds energy; the Karis average takes some from a lone firefly on purpose.
+    CHECK(sum <= 100.0 * 1.001);
+    CHECK(sum > 50.0);  // the hot pixel keeps half (intensity 0.5) and the glow gets some
+    float asymmetry = 0.0f;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const float v = pixel(out, n, x, y);
+            asymmetry = std::max({asymmetry, std::abs(v - pixel(out, n, n - 1 - x, y)), std::abs(v - pixel(out, n, x, n - 1 - y)),
+                                  std::abs(v - pixel(out, n, y, x))});
+        }
+    CHECK(asymmetry <= 1e-3f * peak);
+}
+
+TEST_CASE("gl: bloom keeps a NaN or 1e30 pixel finite and local") {
+    test::glContext();
+    BloomSettings b;
+    b.intensity = 0.5f;
+    b.levels = 2;
+    const int w = 128, h = 72, x0 = 50, y0 = 30;
+    for (float bad : {std::numeric_limits<float>::quiet_NaN(), 1e30f, std::numeric_limits<float>::infinity()}) {
+        INFO("bad pixel " << bad);
+        Bench bench;
+        std::vector<float> image = uniform(w, h, 0.5f);
+        setPixel(image, w, x0, y0, bad);
+        std::vector<float> out = bench.run(image, w, h, 0.0, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+            return addBloomPasses(g, rc, in, b);
+        });
+        CHECK(allFinite(out));
+        float far_change = 0.0f, near_max = 0.0f;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float v = pixel(out, w, x, y);
+                if (std::max(std::abs(x - x0), std::abs(y - y0)) > 24) far_change = std::max(far_change, std::abs(v - 0.5f));
+                else near_max = std::max(near_max, v);
+            }
+        CHECK(far_change < 1e-3f);
+        CHECK(near_max <= 65504.0f);
+        // A huge but finite highlight is clamped and still blooms; NaN and Inf count as 0 (a
+        // bilinear tap across Inf is NaN, so the two cannot be told apart).
+        if (std::isfinite(bad)) CHECK(near_max > 1.0f);
+    }
+}
+
+TEST_CASE("gl: FXAA softens a stair-stepped edge and leaves flat areas alone") {
+    test::glContext();
+    Bench bench;
+    const int w = 64, h = 64;
+    std::vector<float> image = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (x * 3 < y * 2 + 16) setPixel(image, w, x, y, 1.0f);  // a slope of 1.5: stairs
+    FxaaSettings f;
+    std::vector<float> out = bench.run(image, w, h, 0.0, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+        return addFxaaPass(g, rc, in, f, false);
+    });
+    REQUIRE(allFinite(out));
+    int softened = 0, changed_far = 0;
+    for (int y = 2; y < h - 2; ++y)
+        for (int x = 2; x < w - 2; ++x) {
+            const float v = pixel(out, w, x, y), before = pixel(image, w, x, y);
+            CHECK(v >= 0.0f);
+            CHECK(v <= 1.0f);
+            const float edge = std::abs(float(x * 3) - float(y * 2 + 16)) / 3.6f;  // px from the edge line
+            if (v > 0.02f && v < 0.98f) ++softened;
+            if (edge > 3.0f && v != before) ++changed_far;
+        }
+    CHECK(softened > h / 2);
+    CHECK(changed_far == 0);
+}

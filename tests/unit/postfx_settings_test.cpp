@@ -1,0 +1,64 @@
+// [postfx] order and the effect sections through the ini loader, --set and the writer, and
+// the constants the post effects share with their shaders.
+#include "config/ini.h"
+#include "postfx/postfx_bindings.h"
+
+#include <doctest/doctest.h>
+
+using namespace vista;
+
+TEST_CASE("postfx: order reads names in order, blanks or commas between, and writes them back") {
+    Settings s;
+    CHECK(loadIniString("[postfx]\norder = fxaa, Tonemap bloom\n", "scene.ini", s).empty());
+    CHECK(s.postfx.order == std::vector<PostEffect>{PostEffect::Fxaa, PostEffect::Tonemap, PostEffect::Bloom});
+    CHECK(saveIniString(s).find("\norder = fxaa tonemap bloom\n") != std::string::npos);
+
+    CHECK(applyOverride("postfx.order=", s).empty());  // an empty chain
+    CHECK(s.postfx.order.empty());
+    Settings back;
+    CHECK(loadIniString(saveIniString(s), "saved.ini", back).empty());
+    CHECK(back.postfx.order.empty());
+
+    CHECK(applyOverride("postfx.order=exposure tonemap", s).empty());
+    CHECK(s.postfx.order == std::vector<PostEffect>{PostEffect::Exposure, PostEffect::Tonemap});
+}
+
+TEST_CASE("postfx: an unknown or repeated effect in order is an error naming it, the order stays") {
+    Settings s;
+    InputErrors e = loadIniString("[postfx]\norder = bloom glare tonemap\n", "scene.ini", s);
+    REQUIRE(e.size() == 1);
+    CHECK(e[0].line == 2);
+    CHECK(e[0].str().find("[postfx] order = bloom glare tonemap is not accepted ('glare'); accepted: names from bloom, "
+                          "exposure, tonemap, fxaa, each at most once") != std::string::npos);
+    CHECK(s.postfx.order == Settings{}.postfx.order);
+    e = applyOverride("postfx.order=tonemap,tonemap", s);
+    REQUIRE(e.size() == 1);
+    CHECK(e[0].str().find("('tonemap' twice)") != std::string::npos);
+}
+
+TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
+    Settings s;
+    CHECK(applyOverride("postfx.bloom.intensity=0.2", s).empty());
+    CHECK(applyOverride("postfx.bloom.levels=3", s).empty());
+    CHECK(applyOverride("postfx.exposure.mode=manual", s).empty());
+    CHECK(applyOverride("postfx.tonemap.op=agx", s).empty());
+    CHECK(applyOverride("postfx.fxaa.enabled=false", s).empty());
+    CHECK(s.bloom.intensity == 0.2f);
+    CHECK(s.bloom.levels == 3);
+    CHECK(s.exposure.mode == ExposureMode::Manual);
+    CHECK(s.tonemap.op == Tonemapper::Agx);
+    CHECK_FALSE(s.fxaa.enabled);
+    CHECK(applyOverride("postfx.bloom.levels=11", s).size() == 1);
+    CHECK(applyOverride("postfx.exposure.speed_up=0", s).size() == 1);
+    const std::string text = saveIniString(s);
+    for (const char* section : {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]"})
+        CHECK(text.find(std::string("\n") + section + "\n") != std::string::npos);
+}
+
+TEST_CASE("postfx: shared constants: one histogram bin per invocation, state layout") {
+    CHECK(postfx::kHistogramGroup * postfx::kHistogramGroup == postfx::kHistogramBins);
+    CHECK(sizeof(postfx::ExposureState) == 16);
+    CHECK(postfx::kHistogramLogMin < postfx::kHistogramLogMax);
+    CHECK(postfx::kHistogramLogMin <= -20.0f);  // the [postfx.exposure] min_ev/max_ev range fits
+    CHECK(postfx::kHistogramLogMax >= 20.0f);
+}
