@@ -87,6 +87,8 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
     base.sky.enabled = true;
     base.sky.sun_mode = SunMode::Angles;
     base.sky.sun_azimuth_deg = 180.0f;
+    base.sky.moon = false;  // the reference has neither moon nor stars
+    base.sky.stars = false;
 
     std::fprintf(stderr, "bench sky: building the CPU reference...\n");
     const MultipleScatteringTable table(atmosphereParams(base.sky));

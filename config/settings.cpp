@@ -135,6 +135,12 @@ void describe(SettingsVisitor& v, SkySettings& s) {
     v.field({"fog_density_per_km", "1/km", "fog extinction at fog_base_m (visibility = 3.9 / value)"}, s.fog_density_per_km, 0.0f, 1000.0f);
     v.field({"fog_base_m", "m", "altitude where the fog has fog_density_per_km"}, s.fog_base_m, -10000.0f, 100000.0f);
     v.field({"fog_falloff_m", "m", "height over which the fog density falls by e"}, s.fog_falloff_m, 1.0f, 100000.0f);
+    v.field({"moon", "", "draw the moon, lit by the sun (its phase follows)"}, s.moon);
+    v.field({"moon_azimuth_deg", "deg", "moon heading, clockwise from -z (sun_mode = angles)"}, s.moon_azimuth_deg, -360.0f, 360.0f);
+    v.field({"moon_elevation_deg", "deg", "moon angle above the horizon (sun_mode = angles)"}, s.moon_elevation_deg, -90.0f, 90.0f);
+    v.field({"moon_age_days", "day", "days since new moon, 14.77 = full (sun_mode = time)"}, s.moon_age_days, 0.0f, 29.53f);
+    v.field({"stars", "", "draw the star field at night"}, s.stars);
+    v.field({"stars_intensity", "", "radiance of the brightest star per unit sun_illuminance (each fades as the sky brightens)"}, s.stars_intensity, 0.0f, 1.0f);
     v.field({"zenith_color", "", "unused by the physical sky (old scenes load)"}, s.zenith_color, 0.0f, 100.0f);
     v.field({"horizon_color", "", "unused by the physical sky (old scenes load)"}, s.horizon_color, 0.0f, 100.0f);
 }

@@ -145,6 +145,14 @@ struct SkySettings {
     float fog_density_per_km = 1.0f; //!< 1/km extinction at fog_base_m (3.9 / value = visibility in km), 0..1000
     float fog_base_m = 0.0f;         //!< m, altitude where the density is fog_density_per_km, -10000..100000
     float fog_falloff_m = 200.0f;    //!< m, height over which the density falls by e, 1..100000
+    // Night sky, drawn by "sky.atmosphere" behind the atmosphere (dimmed by its transmittance).
+    bool moon = true;                //!< a Lommel-Seeliger sphere lit by the sun: its phase follows
+    float moon_azimuth_deg = 300.0f; //!< deg, clockwise from -z (sun_mode = angles), -360..360
+    float moon_elevation_deg = 30.0f; //!< deg above the horizon (sun_mode = angles), -90..90
+    float moon_age_days = 10.0f;     //!< days since new moon (sun_mode = time; 14.77 = full), 0..29.53
+    bool stars = true;               //!< a fixed random star field turning with the sky (sun_mode = time)
+    float stars_intensity = 1e-3f;   //!< radiance at the centre of the brightest star, per unit sun_illuminance;
+                                     //!< each star fades out as the sky behind it reaches 1% to 10% of its own, 0..1
     glm::vec3 zenith_color{0.18f, 0.36f, 0.80f};  //!< unused by the physical sky; old scenes load
     glm::vec3 horizon_color{0.70f, 0.80f, 0.95f}; //!< unused by the physical sky; old scenes load
 };

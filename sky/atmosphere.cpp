@@ -9,6 +9,7 @@
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -20,6 +21,8 @@ namespace vista {
 
 namespace {
 
+constexpr double kMoonAngularRadiusDeg = 0.2587;  // mean
+constexpr double kMoonAlbedo = 0.12;              // normal albedo of the lunar surface
 constexpr int kMsPolarNodes = 8;    // per polar range, as the reference's default
 constexpr int kMsAzimuthNodes = 6;  // over [0, pi]
 
@@ -74,7 +77,8 @@ double lutSunElevation(const glm::dvec3& sun, const SkySettings& sky) {
 
 // std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
 struct SkyAtmosphere::Uniforms {
-    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon, fog, aerial;
+    glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon, fog, aerial, moon, night;
+    glm::vec4 celestial[3];
     glm::ivec4 sizes, sizes2;
     glm::vec4 gl[16];
     glm::ivec4 gl_count;
@@ -83,6 +87,52 @@ struct SkyAtmosphere::Uniforms {
 glm::dvec3 sunDirection(const SkySettings& sky) {
     if (sky.sun_mode == SunMode::Time) return sunPosition(sky.latitude_deg, sky.day_of_year, sky.time_of_day_h).direction;
     return glm::normalize(directionFromAngles(sky.sun_azimuth_deg, sky.sun_elevation_deg));
+}
+
+namespace {
+
+constexpr double kObliquity = 23.44 * std::numbers::pi / 180.0;
+constexpr double kSynodicMonthDays = 29.530589;
+
+// The sun's ecliptic longitude (mean, 0 at the March equinox) and right ascension at a day.
+double solarLongitude(double day) { return 2.0 * std::numbers::pi * (day - 80.0) / 365.2422; }
+double rightAscension(double longitude) {
+    return std::atan2(std::cos(kObliquity) * std::sin(longitude), std::cos(longitude));
+}
+
+// Columns: the celestial x (vernal equinox), y and z (pole) axes in vista's world (east +x, up
+// +y, north -z) at latitude phi and local sidereal time lst. A direction of hour angle H and
+// declination d is cos d (-sin H east + cos H (cos phi up - sin phi north)) + sin d pole.
+glm::dmat3 worldFromCelestial(double phi, double lst) {
+    const glm::dvec3 east(1.0, 0.0, 0.0), up(0.0, 1.0, 0.0), north(0.0, 0.0, -1.0);
+    const glm::dvec3 meridian = std::cos(phi) * up - std::sin(phi) * north, west = -east;
+    const glm::dvec3 pole = std::cos(phi) * north + std::sin(phi) * up;
+    // H = lst - alpha: cos H and sin H expand into cos/sin alpha terms.
+    const glm::dvec3 x = std::cos(lst) * meridian + std::sin(lst) * west;
+    const glm::dvec3 y = std::sin(lst) * meridian - std::cos(lst) * west;
+    return glm::dmat3(x, y, pole);
+}
+
+double localSiderealTime(const SkySettings& sky) {
+    if (sky.sun_mode != SunMode::Time) return 0.0;
+    const double day = double(sky.day_of_year) + (double(sky.time_of_day_h) - 12.0) / 24.0;
+    const double hour_angle = (double(sky.time_of_day_h) - 12.0) * std::numbers::pi / 12.0;
+    return hour_angle + rightAscension(solarLongitude(day));
+}
+
+}  // namespace
+
+glm::dvec3 moonDirection(const SkySettings& sky) {
+    if (sky.sun_mode != SunMode::Time) return glm::normalize(directionFromAngles(sky.moon_azimuth_deg, sky.moon_elevation_deg));
+    const double day = double(sky.day_of_year) + (double(sky.time_of_day_h) - 12.0) / 24.0;
+    const double longitude = solarLongitude(day) + 2.0 * std::numbers::pi * double(sky.moon_age_days) / kSynodicMonthDays;
+    const double decl = std::asin(std::sin(kObliquity) * std::sin(longitude)), ra = rightAscension(longitude);
+    const glm::dvec3 c(std::cos(decl) * std::cos(ra), std::cos(decl) * std::sin(ra), std::sin(decl));
+    return glm::normalize(worldFromCelestial(glm::radians(double(sky.latitude_deg)), localSiderealTime(sky)) * c);
+}
+
+glm::dmat3 celestialFromWorld(const SkySettings& sky) {
+    return glm::transpose(worldFromCelestial(glm::radians(double(sky.latitude_deg)), localSiderealTime(sky)));
 }
 
 AtmosphereParams atmosphereParams(const SkySettings& s) {
@@ -129,7 +179,7 @@ void SkyAtmosphere::setCamera(Uniforms& u, const AtmosphereParams& p, double alt
 }
 
 void SkyAtmosphere::upload(const Uniforms& u) {
-    static_assert(sizeof(Uniforms) == 496, "Uniforms must match the std140 block");
+    static_assert(sizeof(Uniforms) == 576, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
 }
@@ -156,6 +206,11 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
     if (sky.height_fog && sky.fog_density_per_km > 0.0f)
         u.fog = glm::vec4(sky.fog_density_per_km, sky.fog_base_m * km, sky.fog_falloff_m * km, 0.0f);
     u.aerial = glm::vec4(sky.aerial_distance_km, float(sky.aerial_size), float(sky.aerial_slices), float(sky.aerial_steps));
+    u.moon = glm::vec4(glm::vec3(moonDirection(sky)), float(glm::radians(kMoonAngularRadiusDeg)));
+    u.night = glm::vec4(sky.stars ? sky.stars_intensity * sky.sun_illuminance : 0.0f, float(kMoonAlbedo),
+                        sky.moon ? 1.0f : 0.0f, 0.0f);
+    const glm::dmat3 celestial = glm::transpose(celestialFromWorld(sky));  // rows of celestialFromWorld
+    for (int i = 0; i < 3; ++i) u.celestial[i] = glm::vec4(glm::vec3(celestial[i]), 0.0f);
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
     u.sizes2 = {sky.sky_view_height, sky.transmittance_steps, sky.multiscatter_steps, sky.sky_view_steps};
     std::vector<double> gx, gw;

@@ -10,6 +10,7 @@
 #include "renderer/scene_targets.h"
 #include "sky/atmosphere_model.h"
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -21,6 +22,13 @@ namespace vista {
 // Unit vector towards the sun in vista's world (y up, -z north): from the angles or from
 // latitude, day of year and solar time (sun_mode).
 glm::dvec3 sunDirection(const SkySettings& sky);
+
+// Unit vector towards the moon: from the angles, or (sun_mode = time) moon_age_days after new
+// moon along the ecliptic from the sun (its 5 deg inclination ignored).
+glm::dvec3 moonDirection(const SkySettings& sky);
+// Rotation from vista's world to the celestial frame (z the celestial pole, x the vernal
+// equinox) at the settings' latitude and, in sun_mode = time, local sidereal time (angles: 0).
+glm::dmat3 celestialFromWorld(const SkySettings& sky);
 
 // The model's parameters from the settings (metres, 1/m; solar_irradiance 1: radiances are
 // transfer factors the renderer scales by sun_illuminance).

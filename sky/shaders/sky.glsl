@@ -32,6 +32,78 @@ float hash12(vec2 p) {
     return fract((p3.x + p3.y) * p3.z);
 }
 
+// The moon: a sphere of albedo a_night.y lit by the sun (the sun is far, so it lights the moon
+// from the same direction as the earth: the phase follows from the angle between them), with
+// the Lommel-Seeliger law that makes the full moon a flat disk: L = E albedo / pi *
+// 2 cos_i / (cos_i + cos_e). cover: the fraction of the pixel the disk covers (antialiased edge).
+vec3 moonRadiance(vec3 dir, vec3 sun, float pixel_rad, out float cover) {
+    vec3 m = a_moon.xyz;
+    float radius = a_moon.w;
+    float cos_angle = dot(dir, m);
+    cover = 0.0;
+    if (cos_angle < cos(radius + 2.0 * pixel_rad)) return vec3(0.0);
+    vec3 side = dir - m * cos_angle;
+    float angle = atan(length(side), cos_angle);
+    cover = clamp((radius - angle) / max(pixel_rad, 1e-7) + 0.5, 0.0, 1.0);
+    float x = min(angle / radius, 1.0);
+    vec3 n = -m * sqrt(1.0 - x * x) + safeNormalize(side) * x;  // the visible hemisphere's normal
+    float cos_i = dot(n, sun), cos_e = max(sqrt(1.0 - x * x), 1e-3);
+    if (cos_i <= 0.0) return vec3(0.0);
+    return cover * a_solar.xyz * (a_night.y / PI) * 2.0 * cos_i / (cos_i + cos_e);
+}
+
+vec3 hash33(vec3 p) {
+    p = fract(p * vec3(0.1031, 0.1030, 0.0973));
+    p += dot(p, p.yxz + 33.33);
+    return fract((p.xxy + p.yxx) * p.zyx);
+}
+
+// A fixed field of stars on the celestial sphere (it turns with the sky in sun_mode = time):
+// cube faces of 160^2 cells, a star in a third of them at a random spot, peak brightness 1
+// for the brightest and a power law below (a night-adapted exposure, ~2^16, shows a few
+// hundred in a 60 deg view), a random colour temperature; each star a
+// Gaussian about a pixel wide, from the pixel's cell and its eight neighbours. A star fades out
+// as the sky behind it brightens from 1% to 10% of its peak (faint ones first, as at dusk).
+vec3 starField(vec3 dir, float pixel_rad, float sky_luminance) {
+    vec3 c = vec3(dot(a_celestial[0].xyz, dir), dot(a_celestial[1].xyz, dir), dot(a_celestial[2].xyz, dir));
+    vec3 a = abs(c);
+    float face;
+    vec2 uv;
+    if (a.x >= a.y && a.x >= a.z) {
+        face = c.x > 0.0 ? 0.0 : 1.0;
+        uv = c.yz / a.x;
+    } else if (a.y >= a.z) {
+        face = c.y > 0.0 ? 2.0 : 3.0;
+        uv = c.xz / a.y;
+    } else {
+        face = c.z > 0.0 ? 4.0 : 5.0;
+        uv = c.xy / a.z;
+    }
+    const float cells = 160.0;
+    vec2 g = (uv * 0.5 + 0.5) * cells;
+    vec2 cell0 = floor(g);
+    float sigma = max(0.6 * pixel_rad, 1e-5), cell_rad = 0.5 * PI / cells;
+    vec3 sum = vec3(0.0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            vec2 cell = cell0 + vec2(dx, dy);
+            if (any(lessThan(cell, vec2(0.0))) || any(greaterThanEqual(cell, vec2(cells)))) continue;
+            vec3 h = hash33(vec3(cell, face * 191.0 + 7.0));
+            if (h.z > 0.33) continue;
+            // Distance on the face, as an angle (the face's own distortion is below 2x).
+            vec2 d = (cell + 0.15 + 0.7 * h.xy - g) * cell_rad;
+            // Star counts grow as brightness^-1.25 (10^(0.5 m) stars per magnitude) from the
+            // brightest (1, about one over the sky) through ~1500 above 0.3% of it to ~50,000
+            // above 0.02%: under a night-adapted exposure the faint end stays below visibility.
+            float brightness = min(1.0, pow(max(1.0 - h.z / 0.33, 1e-9), -0.8) / 5750.0);
+            vec3 tint = mix(vec3(1.0, 0.78, 0.6), vec3(0.75, 0.85, 1.0), fract(h.x * 7.13 + h.y * 3.7));
+            float peak = a_night.x * brightness;
+            float contrast = smoothstep(10.0, 100.0, peak / max(sky_luminance, 1e-30));
+            sum += tint * (peak * contrast) * exp(-dot(d, d) / (2.0 * sigma * sigma));
+        }
+    return sum;
+}
+
 void main() {
     vec3 dir = viewRay(v_uv);
     vec3 sun = a_sun.xyz;
@@ -77,6 +149,12 @@ void main() {
         if (mu_s_g > 0.0)
             radiance += t_view * (a_albedo.xyz / PI) * mu_s_g * transmittanceToTop(R, mu_s_g) * a_solar.xyz;
     } else {
+        vec3 t_view = r0 <= Rt ? transmittanceToTop(r0, mu0) : vec3(1.0);
+        float pixel_rad = 2.0 / (u_proj[1][1] * u_viewport.y);
+        float sky_luminance = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
+        // The moon in front of the sun and the stars (an eclipse shows its dark side).
+        float moon_cover = 0.0;
+        vec3 moon = a_night.z > 0.5 ? moonRadiance(dir, sun, pixel_rad, moon_cover) : vec3(0.0);
         // The sun disk: I(c) = 1 - u (1 - c), c = cos of the angle from the limb's normal.
         float alpha = a_misc.z, u = a_misc.w;
         float cos_alpha = cos(alpha);
@@ -84,9 +162,12 @@ void main() {
             float x = safeSqrt(1.0 - nu * nu) / max(sin(alpha), 1e-6);
             float limb = 1.0 - u * (1.0 - safeSqrt(1.0 - x * x));
             float norm = 1.0 / (PI * alpha * alpha * (1.0 - u / 3.0));
-            vec3 t_sun = r0 <= Rt ? transmittanceToTop(r0, mu0) : vec3(1.0);
-            radiance += a_solar.xyz * t_sun * limb * norm;
+            radiance += (1.0 - moon_cover) * a_solar.xyz * t_view * limb * norm;
         }
+        radiance += t_view * moon;
+        // Each star fades out as the sky behind it brightens from 1% to 10% of its own peak.
+        if (a_night.x > 10.0 * sky_luminance && moon_cover < 1.0)
+            radiance += t_view * (1.0 - moon_cover) * starField(dir, pixel_rad, sky_luminance);
     }
     // Dither: +-0.5 of an 8-bit step, relative (the tone curve is roughly logarithmic). Seeded by
     // the scene time, not the frame index: the same scene at the same time renders the same image

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 using namespace vista;
 
@@ -33,6 +34,8 @@ Settings skyOnly(float sun_elevation_deg, float sun_azimuth_deg = 180.0f) {
     s.sky.sun_elevation_deg = sun_elevation_deg;
     s.sky.sun_azimuth_deg = sun_azimuth_deg;
     s.sky.sun_illuminance = 1.0f;
+    s.sky.moon = false;  // the reference has neither moon nor stars
+    s.sky.stars = false;
     return s;
 }
 
@@ -292,4 +295,92 @@ TEST_CASE("gl: height fog thickens the haze, reaches the sky view, and aerial pe
     CHECK_FALSE(has(off, "sky.aerial_volume"));
     CHECK_FALSE(has(off, "sky.aerial"));
     CHECK(has(off, "sky.atmosphere"));
+}
+
+TEST_CASE("gl: the moon's lit fraction and side follow the sun (full, quarter, crescent, eclipse)") {
+    // The moon fills the middle of a 2 deg view (8 px radius); the lit part of its disk is
+    // compared with the illuminated fraction (1 - cos elongation) / 2.
+    const ViewParams v{{0.0, 2.0, 0.0}, 0.0, 30.0, 2.0, 0.5, 64, 64};
+    const glm::dvec3 moon = glm::normalize(directionFromAngles(0.0, 30.0));
+    struct Case {
+        const char* name;
+        float sun_azimuth, sun_elevation;
+    } cases[] = {
+        {"full (sun opposite, below the horizon)", 180.0f, -30.0f},
+        {"first quarter (sun 90 deg east)", 90.0f, 0.0f},
+        {"crescent (sun 60 deg away, below the moon)", 0.0f, -30.0f},
+    };
+    const glm::dmat4 inv(viewMatrices(v).inv_view_proj);
+    for (const Case& c : cases) {
+        CAPTURE(std::string(c.name));
+        Settings s = skyOnly(c.sun_elevation, c.sun_azimuth);
+        Rendered without = render(s, v);
+        s.sky.moon = true;
+        s.sky.moon_azimuth_deg = 0.0f;
+        s.sky.moon_elevation_deg = 30.0f;
+        Rendered with = render(s, v);
+        CHECK(with.nonfinite == 0);
+        const glm::dvec3 sun = sunDirection(s.sky);
+        const double expected = (1.0 - glm::dot(moon, sun)) / 2.0;
+        int disk = 0, lit = 0;
+        double lit_x = 0.0;
+        double peak = 0.0;
+        for (std::size_t i = 0; i < std::size_t(v.width * v.height); ++i)
+            peak = std::max(peak, double(glm::unpackHalf1x16(with.hdr[i * 4])) - glm::unpackHalf1x16(without.hdr[i * 4]));
+        for (int y = 0; y < v.height; ++y)
+            for (int x = 0; x < v.width; ++x) {
+                glm::dvec2 uv((x + 0.5) / v.width, 1.0 - (y + 0.5) / v.height);
+                glm::dvec4 q = inv * glm::dvec4(uv * 2.0 - 1.0, 0.5, 1.0);
+                glm::dvec3 d = glm::normalize(glm::dvec3(q) / q.w);
+                if (std::acos(std::clamp(glm::dot(d, moon), -1.0, 1.0)) > glm::radians(0.2587 - 2.0 / 64.0))
+                    continue;  // inside the disk, a pixel from its edge
+                ++disk;
+                std::size_t i = std::size_t(y * v.width + x) * 4;
+                if (glm::unpackHalf1x16(with.hdr[i]) - glm::unpackHalf1x16(without.hdr[i]) > 0.02 * peak) {
+                    ++lit;
+                    lit_x += x - (v.width - 1) * 0.5;
+                }
+            }
+        REQUIRE(disk > 100);
+        const double fraction = double(lit) / disk;
+        MESSAGE(std::string(c.name) << ": lit " << fraction << " of the disk, expected " << expected);
+        CHECK(std::abs(fraction - expected) < 0.12);
+        if (c.sun_azimuth == 90.0f) CHECK(lit_x > 0.0);  // the sun to the right (east) lights the right half
+    }
+
+    // A solar eclipse: the moon in front of the sun shows its dark side and hides the disk.
+    Settings s = skyOnly(30.0f, 0.0f);
+    s.sky.moon = true;
+    s.sky.moon_azimuth_deg = 0.0f;
+    s.sky.moon_elevation_deg = 30.0f;
+    Rendered eclipse = render(s, v);
+    s.sky.moon = false;
+    Rendered sun = render(s, v);
+    const std::size_t centre = std::size_t((v.height / 2) * v.width + v.width / 2) * 4;
+    CHECK(glm::unpackHalf1x16(eclipse.hdr[centre]) < 0.01f * glm::unpackHalf1x16(sun.hdr[centre]));
+}
+
+TEST_CASE("gl: stars show at night, fade at dusk and are gone by day") {
+    const ViewParams v{{0.0, 2.0, 0.0}, 0.0, 60.0, 60.0, 0.5, 96, 54};
+    auto starPixels = [&](float sun_elevation) {
+        Settings s = skyOnly(sun_elevation, 180.0f);
+        Rendered off = render(s, v);
+        s.sky.stars = true;
+        Rendered on = render(s, v);
+        CHECK(on.nonfinite == 0);
+        std::pair<int, double> stars{0, 0.0};  // pixels well above the sky, and the starlight added
+        for (std::size_t i = 0; i < std::size_t(v.width * v.height); ++i) {
+            const float a = glm::unpackHalf1x16(off.hdr[i * 4 + 1]), b = glm::unpackHalf1x16(on.hdr[i * 4 + 1]);
+            stars.first += b > 2.0f * a + 1e-9f;
+            stars.second += std::max(double(b - a), 0.0);
+        }
+        return stars;
+    };
+    const auto night = starPixels(-18.0f), dusk = starPixels(-4.0f), day = starPixels(30.0f);
+    MESSAGE("star pixels (starlight): night " << night.first << " (" << night.second << "), dusk " << dusk.first << " ("
+                                             << dusk.second << "), day " << day.first << " (" << day.second << ")");
+    CHECK(night.first > 50);
+    CHECK(dusk.second < 0.8 * night.second);
+    CHECK(day.first == 0);
+    CHECK(day.second < 1e-3 * night.second);  // the dither alone
 }

@@ -2,11 +2,13 @@
 // convergence with step count (including the stiff near-horizon and sun-below-horizon cases),
 // symmetries, ray geometry from the ground to geostationary orbit, finite non-negative radiance
 // for extreme views, sunset colour, sun and sky light, and the solar position.
+#include "sky/atmosphere.h"
 #include "sky/atmosphere_model.h"
 #include "sky/atmosphere_reference.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -394,4 +396,24 @@ TEST_CASE("sun position: sunrise azimuth, noon elevation and vista's axes") {
     glm::dvec3 d = dirFromAngles(any.azimuth_deg, any.elevation_deg);
     CHECK(glm::length(d - any.direction) < 1e-12);
     CHECK(glm::length(any.direction) == doctest::Approx(1.0));
+}
+
+TEST_CASE("atmosphere: the moon's direction follows its age from the sun; the celestial pole stands at the latitude") {
+    SkySettings s;
+    s.sun_mode = SunMode::Time;
+    s.latitude_deg = 45.0f;
+    s.day_of_year = 100.0f;
+    s.time_of_day_h = 21.0f;
+    s.moon_age_days = 0.0f;  // new moon: with the sun
+    CHECK(glm::dot(moonDirection(s), sunDirection(s)) > std::cos(glm::radians(3.0)));
+    s.moon_age_days = 14.765f;  // full: opposite
+    CHECK(glm::dot(moonDirection(s), sunDirection(s)) < -std::cos(glm::radians(3.0)));
+    s.moon_age_days = 7.38f;  // quarter: 90 deg away
+    CHECK(std::abs(glm::dot(moonDirection(s), sunDirection(s))) < std::sin(glm::radians(3.0)));
+    // The pole: 45 deg up in the north (-z), at any time.
+    for (float t : {0.0f, 7.0f, 18.5f}) {
+        s.time_of_day_h = t;
+        glm::dvec3 pole = celestialFromWorld(s) * glm::normalize(glm::dvec3(0.0, 1.0, -1.0));
+        CHECK(pole.z == doctest::Approx(1.0).epsilon(1e-9));
+    }
 }
