@@ -17,7 +17,9 @@ TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const
             if (debug.view == DebugView::Albedo) source = targets.albedo;
             if (debug.view == DebugView::Normals) source = targets.normal;
             if (debug.view == DebugView::Lights) source = targets.light_heat;
-            data.view = source.valid() ? int(debug.view) : int(DebugView::Depth);
+            // Without local lights there is no heat target: the lights view shows 0 everywhere.
+            const bool no_heat = debug.view == DebugView::Lights && !source.valid();
+            data.view = source.valid() || no_heat ? int(debug.view) : int(DebugView::Depth);
             data.depth = b.read(targets.depth);
             if (source.valid()) data.source = b.read(source);
             TextureDesc desc = b.desc(targets.depth);
@@ -29,7 +31,7 @@ TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
             glUseProgram(rc.shaders.get("renderer/shaders/debug_view.glsl")->id());
             glUniform1i(0, data.view);
-            glUniform1f(1, heat_max);
+            glUniform1f(1, data.source.valid() ? heat_max : -1.0f);  // < 0: no heat target, 0 lights
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             if (data.source.valid()) glBindTextureUnit(binding::kTex1, ctx.texture(data.source));
             drawFullscreen(rc);

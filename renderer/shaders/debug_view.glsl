@@ -12,7 +12,7 @@
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_source;   // albedo, normal or heat
 layout(location = 0) uniform int u_mode;
-layout(location = 1) uniform float u_heat_max;
+layout(location = 1) uniform float u_heat_max;  // < 0: no heat target (no local lights)
 layout(location = 0) out vec4 o_color;
 
 vec3 heat(float t) {
@@ -42,7 +42,7 @@ void main() {
         vec4 n = texelFetch(u_source, p, 0);
         c = n.w > 0.5 ? decodeNormal(n.xy) * 0.5 + 0.5 : vec3(0.0);
     } else if (u_mode == 4) {
-        float count = texelFetch(u_source, p, 0).r;
+        float count = u_heat_max < 0.0 ? 0.0 : texelFetch(u_source, p, 0).r;  // < 0: no local lights
         // Lights evaluated at this pixel; 0 stays dark blue so light-free areas show.
         c = count > 0.0 ? heat(count / max(u_heat_max, 1.0)) : vec3(0.0, 0.0, 0.15);
     } else {
