@@ -41,7 +41,8 @@ ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc
             glBindTextureUnit(0, ctx.texture(d.image));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kHistogramBinding, ctx.buffer(d.histogram));
             const GLuint g = postfx::kHistogramGroup;
-            glDispatchCompute((GLuint(desc.width) + g - 1) / g, (GLuint(desc.height) + g - 1) / g, 1);
+            const GLuint w = (GLuint(desc.width) + 1) / 2, h = (GLuint(desc.height) + 1) / 2;  // 2x2 blocks
+            glDispatchCompute((w + g - 1) / g, (h + g - 1) / g, 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         });
 

@@ -1,4 +1,4 @@
-// "postfx.exposure.histogram": counts pixels per log2-luminance bin. Bin 0 holds black (below
+// "postfx.exposure.histogram": counts 2x2 pixel blocks per log2-luminance bin. Bin 0 holds black (below
 // 2^EXPOSURE_LOG_MIN); bins 1..EXPOSURE_BINS-1 split [EXPOSURE_LOG_MIN, EXPOSURE_LOG_MAX]
 // evenly. NaN and Inf pixels are not counted. Each workgroup counts in shared memory first.
 #ifdef COMPUTE_SHADER
@@ -16,9 +16,13 @@ void main() {
     uint i = gl_LocalInvocationIndex;
     s_bins[i] = 0u;
     barrier();
+    // One invocation per 2x2 block: a bilinear tap at its centre meters a quarter of the
+    // fetches (an odd last row or column is clamped into the image).
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (all(lessThan(p, textureSize(u_image, 0)))) {
-        vec3 c = texelFetch(u_image, p, 0).rgb;
+    ivec2 size = textureSize(u_image, 0);
+    if (all(lessThan(p, (size + 1) / 2))) {
+        vec2 centre = min(vec2(p * 2 + 1), vec2(size) - 0.5);
+        vec3 c = textureLod(u_image, centre / vec2(size), 0.0).rgb;
         float l = dot(max(c, vec3(0.0)), vec3(0.2126, 0.7152, 0.0722));
         if (!isnan(l) && !isinf(l)) {
             float t = (log2(max(l, 1e-38)) - EXPOSURE_LOG_MIN) / (EXPOSURE_LOG_MAX - EXPOSURE_LOG_MIN);

@@ -174,7 +174,7 @@ TEST_CASE("gl: auto exposure brings a uniform image to middle grey and ignores N
     Bench again;
     again.chainRun(image, 40, 24, s);
     const postfx::ExposureState dirty = again.chain.autoExposure()->read();
-    CHECK(dirty.scale == clean.scale);
+    CHECK(dirty.scale == doctest::Approx(clean.scale).epsilon(1e-6));  // the same bin, summed in another order
     CHECK(std::isfinite(dirty.adapted_log2));
 
     s.exposure.ev = 1.0f;  // compensation doubles the scale
