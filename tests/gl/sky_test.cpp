@@ -122,6 +122,13 @@ TEST_CASE("gl: extreme sky views give finite images") {
         CAPTURE(c.view.pitch_deg);
         Rendered r = render(skyOnly(c.sun_elevation), c.view);
         CHECK(r.nonfinite == 0);
+        // With the moon, the stars and a dense fog whose base is far above the camera.
+        Settings night = skyOnly(c.sun_elevation);
+        night.sky.moon = night.sky.stars = night.sky.height_fog = true;
+        night.sky.fog_density_per_km = 1000.0f;
+        night.sky.fog_base_m = 100000.0f;
+        night.sky.fog_falloff_m = 1.0f;
+        CHECK(render(night, c.view).nonfinite == 0);
     }
 }
 
