@@ -149,7 +149,8 @@ void main() {
         if (mu_s_g > 0.0)
             radiance += t_view * (a_albedo.xyz / PI) * mu_s_g * transmittanceToTop(R, mu_s_g) * a_solar.xyz;
     } else {
-        vec3 t_view = r0 <= Rt ? transmittanceToTop(r0, mu0) : vec3(1.0);
+        // Transmittance to what lies beyond the atmosphere, fetched only where something does.
+        vec3 t_view = vec3(1.0);
         float pixel_rad = 2.0 / (u_proj[1][1] * u_viewport.y);
         float sky_luminance = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
         // The moon in front of the sun and the stars (an eclipse shows its dark side).
@@ -158,6 +159,8 @@ void main() {
         // The sun disk: I(c) = 1 - u (1 - c), c = cos of the angle from the limb's normal.
         float alpha = a_misc.z, u = a_misc.w;
         float cos_alpha = cos(alpha);
+        bool stars_visible = a_night.x > 10.0 * sky_luminance && moon_cover < 1.0;
+        if ((nu > cos_alpha || moon_cover > 0.0 || stars_visible) && r0 <= Rt) t_view = transmittanceToTop(r0, mu0);
         if (nu > cos_alpha) {
             float x = safeSqrt(1.0 - nu * nu) / max(sin(alpha), 1e-6);
             float limb = 1.0 - u * (1.0 - safeSqrt(1.0 - x * x));
@@ -166,7 +169,7 @@ void main() {
         }
         radiance += t_view * moon;
         // Each star fades out as the sky behind it brightens from 1% to 10% of its own peak.
-        if (a_night.x > 10.0 * sky_luminance && moon_cover < 1.0)
+        if (stars_visible)
             radiance += t_view * (1.0 - moon_cover) * starField(dir, pixel_rad, sky_luminance);
     }
     // Dither: +-0.5 of an 8-bit step, relative (the tone curve is roughly logarithmic). Seeded by

@@ -90,7 +90,7 @@ TEST_CASE("gl: sky radiance from the GPU LUTs matches the CPU reference (noon, s
         {"orbit 400 km, limb", 20.0f, view(400000.0, 120.0, -15.0), 35.0},
     };
     for (const Case& c : cases) {
-        CAPTURE(c.name);
+        CAPTURE(std::string(c.name));
         Settings s = skyOnly(c.sun_elevation);
         Rendered r = render(s, c.view);
         CHECK(r.nonfinite == 0);
