@@ -2,6 +2,7 @@
 #include "app/frame.h"
 
 #include "postfx/chain.h"
+#include "postfx/ssao.h"
 #include "renderer/bindings.h"
 #include "renderer/debug_grid.h"
 #include "renderer/debug_view.h"
@@ -224,6 +225,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
+        if (s.ssao.enabled) scene.ao = addSsaoPasses(graph, rc, scene, s.ssao);
         addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene);
         addLocalLightPasses(graph, rc, s, request, scene, report);
     } else {

@@ -192,6 +192,19 @@ void describe(SettingsVisitor& v, FxaaSettings& s) {
     v.field({"subpixel", "", "sub-pixel aliasing removal, 0 off, 1 softest"}, s.subpixel, 0.0f, 1.0f);
 }
 
+void describe(SettingsVisitor& v, SsaoSettings& s) {
+    v.section("postfx.ssao", "screen-space ambient occlusion (horizon based), multiplies the ambient light");
+    v.field({"enabled", "", "compute ambient occlusion before the lighting"}, s.enabled);
+    v.field({"radius_m", "m", "world-space reach of the horizon search"}, s.radius_m, 0.01f, 100.0f);
+    v.field({"intensity", "", "strength: ao = 1 - intensity * occlusion"}, s.intensity, 0.0f, 4.0f);
+    v.field({"bias", "", "sine of the horizon angle ignored (against self-occlusion)"}, s.bias, 0.0f, 0.9f);
+    v.field({"directions", "", "horizon directions per pixel"}, s.directions, 1, 16);
+    v.field({"steps", "", "depth samples along each direction"}, s.steps, 1, 32);
+    v.field({"half_resolution", "", "compute at half size (the blur upsamples depth-aware)"}, s.half_resolution);
+    v.field({"blur", "", "3x3 bilateral blur (off: nearest upsample only)"}, s.blur);
+    v.field({"blur_depth_tolerance", "", "relative depth difference at which blur weights fall by e"}, s.blur_depth_tolerance, 0.001f, 1.0f);
+}
+
 }  // namespace
 
 bool isValidListName(std::string_view name) {
@@ -213,6 +226,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.tonemap);
     describe(v, s.bloom);
     describe(v, s.fxaa);
+    describe(v, s.ssao);
 }
 
 }  // namespace vista

@@ -4,6 +4,7 @@
 
 #include "postfx/bloom.h"
 #include "postfx/fxaa.h"
+#include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
 namespace vista {
@@ -62,7 +63,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
 
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
-    for (auto list : {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms()})
+    for (auto list : {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), ssaoPrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

@@ -1,11 +1,12 @@
 // Post effects on small synthetic inputs under OSMesa: the chain's order and culling, auto
 // exposure's metering and adaptation, tone maps, bloom and FXAA, each on an image made here
-// (imported into a frame graph) rather than on a rendered scene.
+// (imported into a frame graph) rather than on a rendered scene; SSAO on a synthetic G-buffer.
 #include "app/frame.h"
 #include "app/scene.h"
 #include "postfx/bloom.h"
 #include "postfx/chain.h"
 #include "postfx/fxaa.h"
+#include "postfx/ssao.h"
 #include "gl_fixture.h"
 
 #include <algorithm>
@@ -330,4 +331,137 @@ TEST_CASE("gl: FXAA softens a stair-stepped edge and leaves flat areas alone") {
         }
     CHECK(softened > h / 2);
     CHECK(changed_far == 0);
+}
+
+namespace {
+
+// A synthetic G-buffer seen from the origin looking along -z: a floor at y = -1 and, with
+// wall, a wall at z = -6 facing the camera. Depth (reversed-Z) and normals (octahedral, lit)
+// per pixel, rows bottom first; also each pixel's distance to the floor/wall crease.
+struct Gbuffer {
+    int w, h;
+    std::vector<float> depth, normal, crease;
+};
+
+Gbuffer syntheticGbuffer(const ViewParams& view, bool wall) {
+    const ViewMatrices m = viewMatrices(view);
+    Gbuffer g{view.width, view.height, {}, {}, {}};
+    for (int y = 0; y < g.h; ++y)
+        for (int x = 0; x < g.w; ++x) {
+            glm::vec4 far = m.inv_view_proj * glm::vec4((x + 0.5f) / g.w * 2 - 1, (y + 0.5f) / g.h * 2 - 1, 0.5f, 1.0f);
+            glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w);
+            float t = 1e30f;
+            glm::vec3 n{0.0f};
+            if (dir.y < 0.0f) t = -1.0f / dir.y, n = {0, 1, 0};
+            if (wall && dir.z < 0.0f && -6.0f / dir.z < t) t = -6.0f / dir.z, n = {0, 0, 1};
+            float d = 0.0f, c = 1e30f;
+            glm::vec4 e{0.0f};
+            if (t < 1e29f) {
+                glm::vec3 p = dir * t;
+                glm::vec4 clip = m.view_proj * glm::vec4(p, 1.0f);
+                d = clip.z / clip.w;
+                c = glm::length(glm::vec2(p.y + 1.0f, p.z + 6.0f));
+                glm::vec3 o = n / (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));  // octahedral (n.y >= 0 here)
+                e = {o.x * 0.5f + 0.5f, o.z * 0.5f + 0.5f, 0.25f, 1.0f};
+            }
+            g.depth.push_back(d);
+            for (int i = 0; i < 4; ++i) g.normal.push_back(e[i]);
+            g.crease.push_back(c);
+        }
+    return g;
+}
+
+std::vector<float> runSsao(const Gbuffer& g, const ViewParams& view, const SsaoSettings& s) {
+    FrameRenderer renderer(vistaRoot());
+    Settings settings;
+    RenderContext rc = renderer.context(view, settings, 0.0);  // binds the frame uniforms
+    gl::Texture depth = gl::Texture::create2D(g.w, g.h, GL_DEPTH_COMPONENT32F, 1, "test depth");
+    glTextureSubImage2D(depth.id(), 0, 0, 0, g.w, g.h, GL_DEPTH_COMPONENT, GL_FLOAT, g.depth.data());
+    gl::Texture normal = gl::Texture::create2D(g.w, g.h, GL_RGBA16F, 1, "test normal");
+    glTextureSubImage2D(normal.id(), 0, 0, 0, g.w, g.h, GL_RGBA, GL_FLOAT, g.normal.data());
+    TransientPool pool(rc.device);
+    FrameGraph graph;
+    SceneTargets scene;
+    scene.depth = graph.importTexture("depth", {g.w, g.h, PixelFormat::Depth32F}, depth.id());
+    scene.normal = graph.importTexture("normal", {g.w, g.h, PixelFormat::RGBA16F}, normal.id());
+    TextureHandle ao = addSsaoPasses(graph, rc, scene, s);
+    struct Data {
+        TextureHandle t;
+    };
+    std::vector<float> out;
+    graph.addPass<Data>("test.readback",
+        [&](PassBuilder& b, Data& d) {
+            d.t = b.read(ao);
+            b.sideEffect();
+        },
+        [&out, &g](const Data& d, PassContext& ctx) {
+            out.resize(std::size_t(g.w) * std::size_t(g.h) * 4);
+            glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
+        });
+    graph.compile();
+    graph.execute(pool, nullptr);
+    pool.clear();
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("gl: SSAO leaves flat ground open and darkens a crease, at full and half size") {
+    test::glContext();
+    ViewParams view;
+    view.width = 96, view.height = 64;
+    view.pitch_deg = -20.0;
+    for (bool half : {false, true}) {
+        INFO("half resolution " << half);
+        SsaoSettings s;
+        s.half_resolution = half;
+        s.radius_m = 1.0f;
+        const Gbuffer flat = syntheticGbuffer(view, false);
+        std::vector<float> ao = runSsao(flat, view, s);
+        REQUIRE(allFinite(ao));
+        float lowest = 1.0f;
+        for (std::size_t i = 0; i < flat.depth.size(); ++i) lowest = std::min(lowest, ao[i * 4]);
+        CHECK(lowest >= 0.98f);
+
+        const Gbuffer crease = syntheticGbuffer(view, true);
+        ao = runSsao(crease, view, s);
+        REQUIRE(allFinite(ao));
+        double near_sum = 0.0, far_min = 1.0;
+        int near_count = 0;
+        for (std::size_t i = 0; i < crease.depth.size(); ++i) {
+            const float v = ao[i * 4];
+            CHECK(v >= 0.0f);
+            CHECK(v <= 1.0f);
+            if (crease.depth[i] <= 0.0f) CHECK(v == 1.0f);  // sky
+            else if (crease.crease[i] < 0.25f) near_sum += v, ++near_count;
+            else if (crease.crease[i] > 1.5f) far_min = std::min(far_min, double(v));
+        }
+        REQUIRE(near_count > 0);
+        CHECK(near_sum / near_count < 0.9);  // about 0.86: from 1 or 2 of the 4 directions the wall rises
+        CHECK(far_min >= 0.95);
+    }
+}
+
+TEST_CASE("gl: SSAO runs before the sun lighting, and adds no pass when disabled") {
+    test::glContext();
+    FrameRenderer renderer(vistaRoot());
+    std::string errors;
+    REQUIRE(renderer.compilePrograms(errors));
+    Settings s;
+    REQUIRE(renderer.prepare(s).empty());  // the terrain: a G-buffer to occlude
+    std::vector<unsigned char> ldr;
+    FrameRequest request;
+    request.capture_ldr = &ldr;
+    ViewParams view{{0.0, 50.0, 0.0}, 0.0, -10.0, 60.0, 0.1, 64, 36};
+    FrameReport report = renderer.render(s, view, 0.0, request);
+    const auto at = [&](const std::string& name) {
+        return std::find(report.executed.begin(), report.executed.end(), name) - report.executed.begin();
+    };
+    REQUIRE(at("postfx.ssao") < std::ptrdiff_t(report.executed.size()));
+    CHECK(at("postfx.ssao") < at("postfx.ssao.blur"));
+    CHECK(at("postfx.ssao.blur") < at("lighting.sun"));
+    s.ssao.enabled = false;
+    report = renderer.render(s, view, 0.0, request);
+    CHECK_FALSE(has(report.executed, "postfx.ssao"));
+    CHECK_FALSE(has(report.culled, "postfx.ssao"));
 }

@@ -43,6 +43,11 @@ TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
     CHECK(applyOverride("postfx.exposure.mode=manual", s).empty());
     CHECK(applyOverride("postfx.tonemap.op=agx", s).empty());
     CHECK(applyOverride("postfx.fxaa.enabled=false", s).empty());
+    CHECK(applyOverride("postfx.ssao.half_resolution=false", s).empty());
+    CHECK(applyOverride("postfx.ssao.radius_m=0.5", s).empty());
+    CHECK_FALSE(s.ssao.half_resolution);
+    CHECK(s.ssao.radius_m == 0.5f);
+    CHECK(applyOverride("postfx.ssao.directions=0", s).size() == 1);
     CHECK(s.bloom.intensity == 0.2f);
     CHECK(s.bloom.levels == 3);
     CHECK(s.exposure.mode == ExposureMode::Manual);
@@ -51,7 +56,8 @@ TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
     CHECK(applyOverride("postfx.bloom.levels=11", s).size() == 1);
     CHECK(applyOverride("postfx.exposure.speed_up=0", s).size() == 1);
     const std::string text = saveIniString(s);
-    for (const char* section : {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]"})
+    for (const char* section :
+         {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]", "[postfx.ssao]"})
         CHECK(text.find(std::string("\n") + section + "\n") != std::string::npos);
 }
 
