@@ -1,7 +1,8 @@
 // GPU atmosphere LUTs and the sky pass. The transmittance and multiple-scattering LUTs depend
 // only on the atmosphere, so they live here across frames and are rebuilt when its settings
 // change; the sky-view LUT also depends on the sun and the camera's altitude and is rebuilt
-// when either moves enough. A frame that rebuilds nothing adds only "sky.atmosphere".
+// when either crosses a grid step. A frame that rebuilds nothing adds "sky.aerial_volume" and
+// "sky.aerial" (when it has depth and aerial perspective is on) and "sky.atmosphere".
 #include "sky/atmosphere.h"
 
 #include "renderer/bindings.h"

@@ -1,7 +1,9 @@
 // The GPU atmosphere (Hillaire 2020, the model of sky/atmosphere_model.h): long-lived LUTs
 // (transmittance, multiple scattering, sky view) rebuilt only when what they depend on
-// changes, and the "sky.atmosphere" pass that draws the sky, the sun disk and the planet's
-// ground behind everything at infinite depth. Also the sun's direction from the settings.
+// changes; the aerial perspective (haze and optional height fog) over everything at finite
+// depth; and the "sky.atmosphere" pass that draws the sky, the sun disk, the moon, the stars
+// and the planet's ground behind everything at infinite depth. Also the sun's and the moon's
+// directions and the celestial frame from the settings.
 #pragma once
 
 #include "config/settings.h"
