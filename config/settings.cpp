@@ -146,7 +146,7 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 4> effects{"bloom", "exposure", "tonemap", "fxaa"};
+    static constexpr std::array<const char*, 5> effects{"bloom", "exposure", "tonemap", "fxaa", "grade"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -192,6 +192,17 @@ void describe(SettingsVisitor& v, FxaaSettings& s) {
     v.field({"subpixel", "", "sub-pixel aliasing removal, 0 off, 1 softest"}, s.subpixel, 0.0f, 1.0f);
 }
 
+void describe(SettingsVisitor& v, GradeSettings& s) {
+    v.section("postfx.grade", "colour grading on the display image: lift/gamma/gain, saturation, vignette");
+    v.field({"enabled", "", "grade the image"}, s.enabled);
+    v.field({"lift", "", "raises the blacks per channel: c + lift * (1 - c)"}, s.lift, -1.0f, 1.0f);
+    v.field({"gamma", "", "mid-tones per channel: c^(1/gamma), above 1 brightens"}, s.gamma, 0.1f, 10.0f);
+    v.field({"gain", "", "scales the whites per channel"}, s.gain, 0.0f, 10.0f);
+    v.field({"saturation", "", "0 grey, 1 unchanged"}, s.saturation, 0.0f, 4.0f);
+    v.field({"vignette", "", "darkening at the corners, 0 none, 1 black"}, s.vignette, 0.0f, 1.0f);
+    v.field({"vignette_start", "", "share of the centre-to-corner distance where the darkening begins"}, s.vignette_start, 0.0f, 1.0f);
+}
+
 void describe(SettingsVisitor& v, SsaoSettings& s) {
     v.section("postfx.ssao", "screen-space ambient occlusion (horizon based), multiplies the ambient light");
     v.field({"enabled", "", "compute ambient occlusion before the lighting"}, s.enabled);
@@ -226,6 +237,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.tonemap);
     describe(v, s.bloom);
     describe(v, s.fxaa);
+    describe(v, s.grade);
     describe(v, s.ssao);
 }
 

@@ -158,14 +158,15 @@ struct SkySettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
     //! Effects in the order they run on the image. Effects before `tonemap` see linear HDR,
     //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
     //! chain still ends with a clamp and the sRGB encoding.
-    std::vector<PostEffect> order{PostEffect::Bloom, PostEffect::Exposure, PostEffect::Tonemap, PostEffect::Fxaa};
+    std::vector<PostEffect> order{PostEffect::Bloom, PostEffect::Exposure, PostEffect::Tonemap, PostEffect::Grade,
+                                  PostEffect::Fxaa};
 };
 
 enum class ExposureMode : int { Manual, Auto };
@@ -210,6 +211,17 @@ struct FxaaSettings {
     float subpixel = 0.75f;            //!< sub-pixel aliasing removal (0 off, 1 soft), 0..1
 };
 
+//! Colour grading on the display image: lift/gamma/gain per channel, saturation, vignette.
+struct GradeSettings {
+    bool enabled = false;
+    glm::vec3 lift{0.0f};          //!< raises the blacks: c + lift * (1 - c), -1..1
+    glm::vec3 gamma{1.0f};         //!< mid-tones: c^(1/gamma) (above 1 brightens), 0.1..10
+    glm::vec3 gain{1.0f};          //!< scales the whites, 0..10
+    float saturation = 1.0f;       //!< 0 grey, 1 unchanged, 0..4
+    float vignette = 0.0f;         //!< darkening at the corners (0 none, 1 black), 0..1
+    float vignette_start = 0.5f;   //!< share of the centre-to-corner distance where the darkening begins, 0..1
+};
+
 //! Screen-space ambient occlusion (horizon based, HBAO style) from depth and G-buffer normals,
 //! computed before the lighting, which multiplies its ambient term by it. Not part of the
 //! post chain's order: it runs wherever there is a G-buffer.
@@ -238,6 +250,7 @@ struct Settings {
     TonemapSettings tonemap;    // [postfx.tonemap]
     BloomSettings bloom;        // [postfx.bloom]
     FxaaSettings fxaa;          // [postfx.fxaa]
+    GradeSettings grade;        // [postfx.grade]
     SsaoSettings ssao;          // [postfx.ssao]
 };
 

@@ -4,6 +4,7 @@
 
 #include "postfx/bloom.h"
 #include "postfx/fxaa.h"
+#include "postfx/grade.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
@@ -48,6 +49,11 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 exposure = {};
                 display = true;
                 break;
+            case PostEffect::Grade:
+                if (!s.grade.enabled) break;
+                flush();
+                image = addGradePass(graph, rc, image, s.grade);
+                break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
                 flush();
@@ -63,7 +69,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
 
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
-    for (auto list : {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), ssaoPrograms()})
+    for (auto list :
+         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

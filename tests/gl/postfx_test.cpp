@@ -6,6 +6,7 @@
 #include "postfx/bloom.h"
 #include "postfx/chain.h"
 #include "postfx/fxaa.h"
+#include "postfx/grade.h"
 #include "postfx/ssao.h"
 #include "gl_fixture.h"
 
@@ -464,4 +465,54 @@ TEST_CASE("gl: SSAO runs before the sun lighting, and adds no pass when disabled
     report = renderer.render(s, view, 0.0, request);
     CHECK_FALSE(has(report.executed, "postfx.ssao"));
     CHECK_FALSE(has(report.culled, "postfx.ssao"));
+}
+
+TEST_CASE("gl: grading is neutral at its defaults, lifts, gains, desaturates and vignettes") {
+    test::glContext();
+    const int w = 64, h = 36;
+    std::vector<float> image = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = (std::size_t(y) * w + std::size_t(x)) * 4;
+            image[i] = float(x) / float(w - 1), image[i + 1] = float(y) / float(h - 1), image[i + 2] = 0.5f;
+        }
+    const auto grade = [&](const GradeSettings& g) {
+        Bench bench;
+        return bench.run(image, w, h, 0.0, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+            return addGradePass(graph, rc, in, g);
+        });
+    };
+    GradeSettings g;
+    std::vector<float> out = grade(g);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < out.size(); ++i) largest = std::max(largest, std::abs(out[i] - image[i]));
+    CHECK(largest < 1e-5f);
+
+    g.lift = glm::vec3(0.2f);
+    out = grade(g);
+    CHECK(pixel(out, w, 0, 0, 0) == doctest::Approx(0.2f).epsilon(1e-4));   // black lifted
+    CHECK(pixel(out, w, w - 1, 0, 0) == doctest::Approx(1.0f).epsilon(1e-4));  // white stays
+
+    g = GradeSettings{};
+    g.gain = glm::vec3(0.5f, 1.0f, 1.0f);
+    out = grade(g);
+    CHECK(pixel(out, w, w - 1, 0, 0) == doctest::Approx(0.5f).epsilon(1e-4));
+
+    g = GradeSettings{};
+    g.saturation = 0.0f;
+    out = grade(g);
+    CHECK(pixel(out, w, 40, 20, 0) == doctest::Approx(pixel(out, w, 40, 20, 1)).epsilon(1e-5));
+    CHECK(pixel(out, w, 40, 20, 1) == doctest::Approx(pixel(out, w, 40, 20, 2)).epsilon(1e-5));
+
+    g = GradeSettings{};
+    g.vignette = 1.0f;
+    std::vector<float> flat = uniform(w, h, 0.5f);
+    Bench bench;
+    out = bench.run(flat, w, h, 0.0, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+        return addGradePass(graph, rc, in, g);
+    });
+    CHECK(pixel(out, w, w / 2, h / 2) == doctest::Approx(0.5f).epsilon(1e-5));  // the centre is untouched
+    CHECK(pixel(out, w, 0, 0) < 0.05f);                                         // the corner nearly black
+    CHECK(pixel(out, w, 0, 0) == doctest::Approx(pixel(out, w, w - 1, h - 1)).epsilon(1e-4));
+    CHECK(allFinite(out));
 }

@@ -29,7 +29,7 @@ TEST_CASE("postfx: an unknown or repeated effect in order is an error naming it,
     REQUIRE(e.size() == 1);
     CHECK(e[0].line == 2);
     CHECK(e[0].str().find("[postfx] order = bloom glare tonemap is not accepted ('glare'); accepted: names from bloom, "
-                          "exposure, tonemap, fxaa, each at most once") != std::string::npos);
+                          "exposure, tonemap, fxaa, grade, each at most once") != std::string::npos);
     CHECK(s.postfx.order == Settings{}.postfx.order);
     e = applyOverride("postfx.order=tonemap,tonemap", s);
     REQUIRE(e.size() == 1);
@@ -43,6 +43,8 @@ TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
     CHECK(applyOverride("postfx.exposure.mode=manual", s).empty());
     CHECK(applyOverride("postfx.tonemap.op=agx", s).empty());
     CHECK(applyOverride("postfx.fxaa.enabled=false", s).empty());
+    CHECK(applyOverride("postfx.grade.lift=0.1 0 -0.1", s).empty());
+    CHECK(s.grade.lift == glm::vec3(0.1f, 0.0f, -0.1f));
     CHECK(applyOverride("postfx.ssao.half_resolution=false", s).empty());
     CHECK(applyOverride("postfx.ssao.radius_m=0.5", s).empty());
     CHECK_FALSE(s.ssao.half_resolution);
@@ -57,7 +59,7 @@ TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
     CHECK(applyOverride("postfx.exposure.speed_up=0", s).size() == 1);
     const std::string text = saveIniString(s);
     for (const char* section :
-         {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]", "[postfx.ssao]"})
+         {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]", "[postfx.grade]", "[postfx.ssao]"})
         CHECK(text.find(std::string("\n") + section + "\n") != std::string::npos);
 }
 
