@@ -20,6 +20,21 @@
 namespace vista {
 namespace {
 
+// --size WxH into width and height (unchanged on error); false with a message when malformed.
+bool parseSize(const std::string& size, int& width, int& height) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
+        w > 16384 || h > 16384) {
+        std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n", size.c_str());
+        return false;
+    }
+    width = w;
+    height = h;
+    return true;
+}
+
+
 struct SceneOptions {
     std::string config;
     std::vector<std::string> overrides;
@@ -65,18 +80,7 @@ struct CaptureOptions {
         if (fps > 0.0) c.fps = float(fps);
         if (!out.empty()) c.out = out;
         if (!format.empty()) c.format = format == "exr" ? ImageFormat::Exr : ImageFormat::Png;
-        if (!size.empty()) {
-            int w = 0, h = 0;
-            char x = 0, extra = 0;
-            if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 ||
-                h < 1 || w > 16384 || h > 16384) {
-                std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n", size.c_str());
-                return false;
-            }
-            c.width = w;
-            c.height = h;
-        }
-        return true;
+        return size.empty() || parseSize(size, c.width, c.height);
     }
 
     Backend backendValue() const {
@@ -231,12 +235,7 @@ int runCli(int argc, char** argv) {
     if (*bench_lights) {
         Settings s;
         if (!lights_scene.load(s)) return 2;
-        if (!lights_size.empty() && (std::sscanf(lights_size.c_str(), "%dx%d", &lights_opts.width, &lights_opts.height) != 2 ||
-                                     lights_opts.width < 1 || lights_opts.height < 1 || lights_opts.width > 16384 ||
-                                     lights_opts.height > 16384)) {
-            std::fprintf(stderr, "vista: --size %s: accepted WxH, each 1..16384\n", lights_size.c_str());
-            return 2;
-        }
+        if (!lights_size.empty() && !parseSize(lights_size, lights_opts.width, lights_opts.height)) return 2;
         if (!lights_counts.empty()) lights_opts.lights = lights_counts;
         if (!lights_methods.empty()) {
             lights_opts.methods.clear();
@@ -260,11 +259,7 @@ int runCli(int argc, char** argv) {
     if (*bench_sky) {
         Settings s;
         if (!sky_scene.load(s)) return 2;
-        if (!sky_size.empty() && (std::sscanf(sky_size.c_str(), "%dx%d", &sky_opts.width, &sky_opts.height) != 2 ||
-                                  sky_opts.width < 1 || sky_opts.height < 1 || sky_opts.width > 16384 || sky_opts.height > 16384)) {
-            std::fprintf(stderr, "vista: --size %s: accepted WxH, each 1..16384\n", sky_size.c_str());
-            return 2;
-        }
+        if (!sky_size.empty() && !parseSize(sky_size, sky_opts.width, sky_opts.height)) return 2;
         sky_opts.json = sky_json;
         sky_opts.backend = sky_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchSky(s, sky_opts);
