@@ -4,6 +4,7 @@
 // light sets give finite images; a scene without local lights runs no light pass.
 #include "app/frame.h"
 #include "app/scene.h"
+#include "lighting/brdf.h"
 #include "lighting/light_settings.h"
 #include "gl_fixture.h"
 #include "terrain/heightmap.h"
@@ -320,4 +321,65 @@ TEST_CASE("gl: switching methods frees the structures the new method does not us
     CHECK(naive <= std::size_t(144 * 48 * 3 / 2 + 256));  // the light buffer (grown at most 1.5x) and the grid block
     render(s, LightCulling::Clustered, kView);
     CHECK(renderer().localLights()->stats().memory_bytes > naive);
+}
+
+TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (falloff, spot cone, BRDF)") {
+    FrameRenderer& r = renderer();
+    const int w = 80, h = 40;
+    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "light probe");
+    gl::Framebuffer fb = gl::createFramebuffer("light probe");
+    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    gl::VertexArray vao = gl::createVertexArray("light probe");
+    for (const char* spec : {"point -150 118 146  radius 12  color 1 0.8 0.6  intensity 50",
+                             "spot -148 124 140  radius 30  color 0.7 0.9 1  intensity 300  direction 0.2 -1 -0.3  cone 15 35",
+                             "spot -150 119 147  radius 20  intensity 100  direction 0 -1 0  cone 30 30"}) {
+        CAPTURE(spec);
+        Settings s = hillScene();
+        addLight(s, "probe", spec);
+        s.lights.culling = LightCulling::Naive;
+        useHills(s);
+        FrameRequest request;
+        std::vector<unsigned char> ldr;
+        request.capture_ldr = &ldr;
+        r.render(s, kView, 0.0, request);
+        REQUIRE(r.localLights());
+        auto* program = r.shaders().get("tests/gl/shaders/light_reference_probe.glsl", {"LIGHTS_NAIVE"});
+        REQUIRE(program);
+        r.localLights()->bindForForward();
+        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+        glViewport(0, 0, w, h);
+        glUseProgram(program->id());
+        glBindVertexArray(vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        std::vector<float> gpu(std::size_t(w) * std::size_t(h) * 4);
+        glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(gpu.size() * 4), gpu.data());
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+        const Light& light = s.lights.lights[0].light;
+        const glm::dvec3 albedo{0.8, 0.6, 0.4}, n = glm::normalize(glm::dvec3(0.1, 1.0, 0.2));
+        double peak = 0.0, worst = 0.0;
+        int reached = 0, disagree = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const glm::dvec3 rel{x * 0.5 - 20.0, -6.0 + 0.05 * y, -2.0 - 0.5 * y};
+                const glm::dvec3 world = kView.position + rel;
+                const glm::dvec3 l = glm::normalize(light.position - world), v = glm::normalize(-rel);
+                const glm::dvec3 cpu = attenuation(light, world) * evalBrdf(albedo, 0.35, 0.04, n, l, v) *
+                                       glm::dvec3(light.color) * double(light.intensity) * std::max(glm::dot(n, l), 0.0);
+                const float* g = &gpu[(std::size_t(y) * w + std::size_t(x)) * 4];
+                // Reach is exact in double; float may differ within 1e-5 of the edge.
+                const double edge = std::abs(glm::length(light.position - world) - light.radius_m);
+                if ((g[3] > 0.5f) != reaches(light, world) && edge > 1e-3) ++disagree;
+                reached += reaches(light, world);
+                for (int c = 0; c < 3; ++c) {
+                    peak = std::max(peak, cpu[c]);
+                    worst = std::max(worst, std::abs(double(g[c]) - cpu[c]));
+                }
+            }
+        CAPTURE(peak);
+        CAPTURE(worst);
+        CHECK(reached > 50);
+        CHECK(disagree == 0);
+        CHECK(worst <= 2e-3 * peak);
+    }
 }
