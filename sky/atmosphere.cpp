@@ -7,6 +7,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/camera.h"
+#include "sky/atmosphere_reference.h"
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/geometric.hpp>
@@ -26,29 +27,6 @@ constexpr double kMoonAngularRadiusDeg = 0.2587;  // mean
 constexpr double kMoonAlbedo = 0.12;              // normal albedo of the lunar surface
 constexpr int kMsPolarNodes = 8;    // per polar range, as the reference's default
 constexpr int kMsAzimuthNodes = 6;  // over [0, pi]
-
-// Gauss-Legendre nodes and weights on [0, 1] (Newton on the Legendre recurrence).
-void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w) {
-    x.assign(std::size_t(n), 0.0);
-    w.assign(std::size_t(n), 0.0);
-    for (int i = 0; i < n; ++i) {
-        double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = 0.0;
-            for (int j = 1; j <= n; ++j) {
-                double p2 = p1;
-                p1 = p0;
-                p0 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p2) / j;
-            }
-            dp = n * (z * p0 - p1) / (z * z - 1.0);
-            double dz = p0 / dp;
-            z -= dz;
-            if (std::abs(dz) < 1e-15) break;
-        }
-        x[std::size_t(i)] = 0.5 * (1.0 - z);
-        w[std::size_t(i)] = 1.0 / ((1.0 - z * z) * dp * dp);
-    }
-}
 
 gl::Texture makeLut(int width, int height, GLenum format, const char* name) {
     gl::Texture t = gl::Texture::create2D(width, height, format, 1, name);

@@ -225,7 +225,9 @@ RaySums integrateRay(const AtmosphereParams& p, const RayState& s, double length
     return out;
 }
 
-// Gauss-Legendre nodes and weights on [0, 1] (Newton on the Legendre recurrence).
+
+}  // namespace
+
 void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w) {
     x.assign(n, 0.0);
     w.assign(n, 0.0);
@@ -247,8 +249,6 @@ void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w) {
         w[i] = 1.0 / ((1.0 - z * z) * dp * dp);  // 2 / ((1 - z^2) P'^2), halved for [0, 1]
     }
 }
-
-}  // namespace
 
 glm::dvec3 opticalDepth(const AtmosphereParams& p, double r, double mu, int steps) {
     r = std::clamp(r, p.bottom_radius, p.top_radius);

@@ -92,4 +92,8 @@ glm::dvec3 sunIrradiance(const AtmosphereParams& p, glm::dvec3 pos, glm::dvec3 s
 glm::dvec3 skyIrradianceUp(const AtmosphereParams& p, glm::dvec3 pos, glm::dvec3 sun_dir, const IntegrationSteps& steps = {},
                            const MultipleScatteringTable* ms = nullptr, int polar_nodes = 8, int azimuth_nodes = 8);
 
+// n Gauss-Legendre nodes x and weights w on [0, 1] (Newton on the Legendre recurrence); the
+// quadrature the multiple-scattering integrals use, on the CPU and for the GPU LUT's directions.
+void gaussLegendre01(int n, std::vector<double>& x, std::vector<double>& w);
+
 }  // namespace vista
