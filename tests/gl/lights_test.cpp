@@ -111,6 +111,29 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();
 }
 
+// Draws a full-screen probe program (tests/gl/shaders/) with this frame's light buffers bound
+// into a w x h RGBA32F target and reads it back (row 0 at the bottom).
+std::vector<float> drawProbe(const std::string& shader, const std::string& define, int w, int h) {
+    FrameRenderer& r = renderer();
+    REQUIRE(r.localLights());
+    auto* program = r.shaders().get(shader, {define});
+    REQUIRE(program);
+    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "probe");
+    gl::Framebuffer fb = gl::createFramebuffer("probe");
+    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    gl::VertexArray vao = gl::createVertexArray("probe");
+    r.localLights()->bindForForward();
+    glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+    glViewport(0, 0, w, h);
+    glUseProgram(program->id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
+    glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return texels;
+}
+
 const ViewParams kView{{-150.0, 120.0, 150.0}, 45.0, -30.0, 60.0, 0.5, 160, 90};
 
 }  // namespace
@@ -262,10 +285,6 @@ TEST_CASE("gl: forward light lists cover transparent surfaces in front of the op
     useHills(s);
     FrameRenderer& r = renderer();
     const int w = kView.width, h = kView.height;
-    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "forward probe");
-    gl::Framebuffer fb = gl::createFramebuffer("forward probe");
-    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    gl::VertexArray vao = gl::createVertexArray("forward probe");
     auto probe = [&](LightCulling method, bool forward) {
         s.lights.culling = method;
         FrameRequest request;
@@ -274,17 +293,7 @@ TEST_CASE("gl: forward light lists cover transparent surfaces in front of the op
         request.forward_lights = forward;
         r.render(s, kView, 0.0, request);
         REQUIRE(r.localLights());
-        auto* program = r.shaders().get("tests/gl/shaders/forward_probe.glsl", {r.localLights()->define()});
-        REQUIRE(program);
-        r.localLights()->bindForForward();
-        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-        glViewport(0, 0, w, h);
-        glUseProgram(program->id());
-        glBindVertexArray(vao.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
-        glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        const std::vector<float> texels = drawProbe("tests/gl/shaders/forward_probe.glsl", r.localLights()->define(), w, h);
         double missed = 0, reaching = 0, evaluated = 0;
         for (std::size_t i = 0; i < texels.size(); i += 4) {
             missed += texels[i];
@@ -326,10 +335,6 @@ TEST_CASE("gl: switching methods frees the structures the new method does not us
 TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (falloff, spot cone, BRDF)") {
     FrameRenderer& r = renderer();
     const int w = 80, h = 40;
-    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "light probe");
-    gl::Framebuffer fb = gl::createFramebuffer("light probe");
-    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    gl::VertexArray vao = gl::createVertexArray("light probe");
     for (const char* spec : {"point -150 118 146  radius 12  color 1 0.8 0.6  intensity 50",
                              "spot -148 124 140  radius 30  color 0.7 0.9 1  intensity 300  direction 0.2 -1 -0.3  cone 15 35",
                              "spot -150 119 147  radius 20  intensity 100  direction 0 -1 0  cone 30 30"}) {
@@ -342,18 +347,7 @@ TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (
         std::vector<unsigned char> ldr;
         request.capture_ldr = &ldr;
         r.render(s, kView, 0.0, request);
-        REQUIRE(r.localLights());
-        auto* program = r.shaders().get("tests/gl/shaders/light_reference_probe.glsl", {"LIGHTS_NAIVE"});
-        REQUIRE(program);
-        r.localLights()->bindForForward();
-        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-        glViewport(0, 0, w, h);
-        glUseProgram(program->id());
-        glBindVertexArray(vao.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        std::vector<float> gpu(std::size_t(w) * std::size_t(h) * 4);
-        glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(gpu.size() * 4), gpu.data());
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        const std::vector<float> gpu = drawProbe("tests/gl/shaders/light_reference_probe.glsl", "LIGHTS_NAIVE", w, h);
 
         const Light& light = s.lights.lights[0].light;
         const glm::dvec3 albedo{0.8, 0.6, 0.4}, n = glm::normalize(glm::dvec3(0.1, 1.0, 0.2));
