@@ -49,10 +49,12 @@ inline int tilePixels(LightTileSize s) { return s == LightTileSize::Px16 ? 16 : 
 struct NamedLight {
     std::string name;
     Light light;
+    bool operator==(const NamedLight&) const = default;
 };
 struct NamedLightVolume {
     std::string name;
     LightVolume volume;
+    bool operator==(const NamedLightVolume&) const = default;
 };
 
 struct LightsSettings {

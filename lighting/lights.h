@@ -44,6 +44,8 @@ struct Light {
     glm::vec3 direction{0, -1, 0};     // spot axis (world, normalised on use); point lights ignore it
     float inner_deg = 20.0f;           // deg, spot half-angle of full intensity, [0, outer_deg]
     float outer_deg = 30.0f;           // deg, spot half-angle where the light ends, [0, 180]
+
+    bool operator==(const Light&) const = default;
 };
 
 // Windowed inverse-square falloff from the squared distance (m^2) and the radius (m).
@@ -97,6 +99,8 @@ struct LightVolume {
     float hue_min = 0.0f, hue_max = 1.0f; // the random hue's range, fractions of the colour wheel, [0, 1]
     float ground_m = -1.0f;               // m: >= 0 puts every light this high above the terrain
                                           // (the box's y range is then ignored); < 0: off
+
+    bool operator==(const LightVolume&) const = default;
 };
 // Number of lights the volume makes (0 if any count is below 1).
 std::uint64_t lightCount(const LightVolume& volume);
@@ -117,6 +121,8 @@ struct LightAnimation {
     float period_s = 10.0f;    // s per loop; <= 0: still
     float fraction = 1.0f;     // share of the lights that move, [0, 1]
     std::uint32_t seed = 1;
+
+    bool operator==(const LightAnimation&) const = default;
 };
 bool isAnimated(const LightAnimation& animation, std::uint64_t light_index);
 glm::dvec3 animatedPosition(const glm::dvec3& base, const LightAnimation& animation, double t_s,

@@ -43,19 +43,6 @@ const char* methodDefine(LightCulling m) {
     return "LIGHTS_NAIVE";
 }
 
-std::string entriesKey(const LightsSettings& s) {
-    std::string key;
-    for (const NamedLight& l : s.lights) key += formatLightSpec(l.light) + ";";
-    key += "|";
-    for (const NamedLightVolume& v : s.volumes) key += formatVolumeSpec(v.volume) + ";";
-    return key;
-}
-
-bool sameAnimation(const LightAnimation& a, const LightAnimation& b) {
-    return a.motion == b.motion && a.amplitude_m == b.amplitude_m && a.period_s == b.period_s &&
-           a.fraction == b.fraction && a.seed == b.seed;
-}
-
 }  // namespace
 
 std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground) {
@@ -125,7 +112,7 @@ void LocalLights::readOverflow() {
                      "vista: lights: %u tile/cluster light lists overflowed [lights] max_lights_per_cell = %d; "
                      "those cells shade every light (correct, slower). Raise max_lights_per_cell (1..4096) or "
                      "lower the light radii.\n",
-                     value, settings_.max_lights_per_cell);
+                     value, max_lights_per_cell_);
     overflow_warned_ = value > 0;
 }
 
@@ -133,17 +120,20 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
                           const GroundHeight& ground) {
     const auto start = std::chrono::steady_clock::now();
     readOverflow();
-    settings_ = s;
-    // Collect when the entries change; animate every frame when something moves.
-    std::string key = entriesKey(s) + (ground ? "ground" : "");
-    bool changed = key != key_;
+    max_lights_per_cell_ = s.max_lights_per_cell;
+    // Collect when the entries change (compared field by field, nothing copied on a steady
+    // frame); animate every frame when something moves.
+    const bool changed = !collected_ || s.lights != lights_ || s.volumes != volumes_ || bool(ground) != had_ground_;
     if (changed) {
         base_ = s.enabled ? collectSceneLights(s, ground) : std::vector<Light>{};
-        key_ = std::move(key);
+        lights_ = s.lights;
+        volumes_ = s.volumes;
+        had_ground_ = bool(ground);
+        collected_ = true;
         hash_built_ = false;
     }
     const bool animated = s.animation.motion != LightMotion::None && s.animation.period_s > 0.0f;
-    if (changed || animated || !sameAnimation(animation_, s.animation)) {
+    if (changed || animated || !(animation_ == s.animation)) {
         if (animated)
             animateLights(base_, s.animation, time_s, animated_);
         else

@@ -111,7 +111,9 @@ private:
     void uploadHash();
     void readOverflow();
 
-    std::string key_;                 // the entries the lights were collected from
+    std::vector<NamedLight> lights_;            // the entries the lights were collected from
+    std::vector<NamedLightVolume> volumes_;
+    bool had_ground_ = false, collected_ = false;
     std::vector<Light> base_, animated_;
     LightAnimation animation_;
     std::vector<Sphere> world_spheres_;
@@ -122,7 +124,7 @@ private:
     bool hash_built_ = false, hash_uploaded_ = false;
     std::string hash_message_;
     ClusterGrid grid_;
-    LightsSettings settings_;
+    int max_lights_per_cell_ = 0;  // for the overflow warning
     GpuBuffer lights_buf_, spheres_buf_, cells_buf_, indices_buf_, hash_buf_, grid_ubo_, pool_buf_;
     std::array<gl::Buffer, 3> overflow_ring_;
     std::array<GLsync, 3> overflow_fence_{};
