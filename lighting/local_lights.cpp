@@ -19,7 +19,7 @@ namespace {
 struct GpuLight {
     glm::vec4 position_radius, color_scale, direction_offset;
 };
-static_assert(sizeof(GpuLight) == 48, "GpuLight must match LocalLight in lights.glsl");
+static_assert(sizeof(GpuLight) == 3 * sizeof(glm::vec4), "GpuLight must match LocalLight in lights.glsl");
 
 // std140 mirror of LightGrid in lighting/shaders/lights.glsl.
 struct GridUniforms {
@@ -185,9 +185,10 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
     const bool screen_culled = stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered;
     const double ty = std::tan(glm::radians(view.fov_deg) * 0.5), tx = ty * double(view.width) / double(view.height);
     const double kx = std::sqrt(1.0 + tx * tx), ky = std::sqrt(1.0 + ty * ty);
-    std::vector<glm::vec4> spheres;  // view space, for the culling pass
-    std::vector<std::uint32_t> order;
-    order.reserve(animated_.size());
+    std::vector<glm::vec4>& spheres = spheres_scratch_;  // view space, for the culling pass
+    std::vector<std::uint32_t>& order = order_scratch_;  // members: their memory is reused every frame
+    spheres.clear();
+    order.clear();
     for (std::size_t i = 0; i < animated_.size(); ++i) {
         if (!screen_culled) {
             order.push_back(std::uint32_t(i));
@@ -210,23 +211,24 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
 
     // Light buffer, camera-relative (the subtraction in double keeps far-out scenes exact).
     const std::size_t n = order.size();
-    std::vector<GpuLight> gpu(n);
+    std::vector<glm::vec4>& gpu = light_scratch_;  // GpuLight: 3 vec4 per light
+    gpu.resize(3 * n);
     for (std::size_t k = 0; k < n; ++k) {
         const Light& l = animated_[order[k]];
         const SpotCone cone = spotCone(l);
-        gpu[k].position_radius = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
-        gpu[k].color_scale = glm::vec4(l.color * l.intensity, cone.scale);
-        glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
-        gpu[k].direction_offset = glm::vec4(dir, cone.offset);
+        const glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
+        gpu[3 * k + 0] = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
+        gpu[3 * k + 1] = glm::vec4(l.color * l.intensity, cone.scale);
+        gpu[3 * k + 2] = glm::vec4(dir, cone.offset);
     }
     lights_buf_.upload(gpu.data(), n * sizeof(GpuLight), "lights");
 
     GridUniforms u{};
     u.grid = glm::uvec4(std::uint32_t(n), 16u, 1u, 1u);
-    u.slices = glm::vec4(float(view.near_m), 1.0f, 1.0f, float(std::tan(glm::radians(view.fov_deg) * 0.5)));
+    u.slices = glm::vec4(float(view.near_m), 1.0f, 1.0f, float(ty));
     u.grid3 = glm::vec4(float(double(view.width) / double(view.height)), 0.0f, 0.0f, 0.0f);
     stats_.tiles_x = stats_.tiles_y = stats_.slices = 0;
-    if (stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered) {
+    if (screen_culled) {
         ClusterGridParams p;
         p.width_px = view.width;
         p.height_px = view.height;

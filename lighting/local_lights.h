@@ -34,6 +34,8 @@
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 
+#include <glm/vec4.hpp>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -117,6 +119,8 @@ private:
     std::vector<Light> base_, animated_;
     LightAnimation animation_;
     std::vector<Sphere> world_spheres_;
+    std::vector<glm::vec4> spheres_scratch_, light_scratch_;  // per-frame upload data, memory kept
+    std::vector<std::uint32_t> order_scratch_;
     LightHash hash_;
     LightHashSettings hash_settings_;
     std::vector<std::uint32_t> hash_words_;  // the tables as uploaded (header + tables)
