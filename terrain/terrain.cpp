@@ -47,7 +47,10 @@ std::vector<std::uint32_t> gridIndices(int q) {
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() {
-    return {{"terrain/shaders/terrain.glsl", {}}, {"terrain/shaders/normals.glsl", {}}, {"terrain/shaders/bounds.glsl", {}}};
+    return {{"terrain/shaders/terrain.glsl", {}},
+            {"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}},
+            {"terrain/shaders/normals.glsl", {}},
+            {"terrain/shaders/bounds.glsl", {}}};
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
@@ -156,7 +159,7 @@ double Terrain::heightAt(double x, double z) const {
 }
 
 const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
-                                double error_scale) {
+                                double error_scale, const Frustum* caster_frustum) {
     auto start = std::chrono::steady_clock::now();
     source_.origin = s.origin;  // moving the terrain needs no reload
     camera_ = camera;
@@ -179,30 +182,47 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
         bias_dirty_ = true;
     }
     // The mapping is centred on the origin: select with the camera relative to the terrain.
-    selectNodes(tree_, mapping_, lod_, camera - s.origin, frustumFromViewProj(view_proj), selection_,
+    const Frustum view = frustumFromViewProj(view_proj);
+    selectNodes(tree_, mapping_, lod_, camera - s.origin, caster_frustum ? *caster_frustum : view, selection_,
                 error_metric ? &bias_ : nullptr);
-    instances_.clear();
-    glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera.x - s.origin.x, camera.z - s.origin.z);
-    for (const SelectedNode& node : selection_.nodes) {
-        // The mesh is a half-node grid: a whole node is drawn as its four quadrants, a
-        // partial node (one quadrant of a level-L node, see SelectedNode) as one.
-        bool whole = node.node_level == node.level;
-        glm::dvec2 step = node.size_m * (whole ? 1.0 : 2.0) / double(s.grid);
-        glm::dvec2 half = step * double(s.grid / 2);
-        glm::dvec2 c = selection_.morph_consts[std::size_t(node.level)];
-        for (int q = 0; q < (whole ? 4 : 1) && instances_.size() < kMaxInstances; ++q) {
-            glm::dvec2 o = node.origin_rel + glm::dvec2(q & 1, q >> 1) * half;
-            if (o.x >= map_max.x || o.y >= map_max.y) continue;  // a quadrant wholly past the map's edge
-            instances_.push_back({glm::vec4(float(o.x), float(o.y), float(step.x), float(node.level)),
-                                  glm::vec4(float(c.x), float(c.y), float(step.y), 0.0f)});
-        }
+    const Selection* drawn = &selection_;
+    if (caster_frustum) {
+        cullSelection(selection_, view, visible_);
+        drawn = &visible_;
     }
-    counters_.nodes = std::int64_t(selection_.nodes.size());
+    instances_.clear();
+    appendInstances(drawn->nodes, instances_);
+    counters_.nodes = std::int64_t(drawn->nodes.size());
     counters_.draws = instances_.empty() ? 0 : 1;
     counters_.triangles = std::int64_t(instances_.size()) * (index_count_ / 3);
     counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
+}
+
+void Terrain::appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out) const {
+    const std::size_t first = out.size();
+    glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera_.x - source_.origin.x, camera_.z - source_.origin.z);
+    for (const SelectedNode& node : nodes) {
+        // The mesh is a half-node grid: a whole node is drawn as its four quadrants, a
+        // partial node (one quadrant of a level-L node, see SelectedNode) as one.
+        bool whole = node.node_level == node.level;
+        glm::dvec2 step = node.size_m * (whole ? 1.0 : 2.0) / double(source_.grid);
+        glm::dvec2 half = step * double(source_.grid / 2);
+        glm::dvec2 c = selection_.morph_consts[std::size_t(node.level)];
+        for (int q = 0; q < (whole ? 4 : 1) && out.size() - first < kMaxInstances; ++q) {
+            glm::dvec2 o = node.origin_rel + glm::dvec2(q & 1, q >> 1) * half;
+            if (o.x >= map_max.x || o.y >= map_max.y) continue;  // a quadrant wholly past the map's edge
+            out.push_back({glm::vec4(float(o.x), float(o.y), float(step.x), float(node.level)),
+                           glm::vec4(float(c.x), float(c.y), float(step.y), 0.0f)});
+        }
+    }
+}
+
+void Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const {
+    out.clear();
+    cullSelection(selection_, planes, culled_);
+    appendInstances(culled_.nodes, out);
 }
 
 void Terrain::bindTiles(GLuint program, GLint location) const {
@@ -211,37 +231,60 @@ void Terrain::bindTiles(GLuint program, GLint location) const {
                        float(map_.height));
 }
 
-void Terrain::draw(const TerrainSettings& s, GLuint program) {
-    if (instances_.empty()) return;
+void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
     if (bias_dirty_) {
         glm::ivec2 corners = bias_.cornerCount();
         glTextureSubImage2D(bias_texture_.id(), 0, 0, 0, corners.x, corners.y, GL_RED, GL_FLOAT, bias_.corners().data());
         bias_dirty_ = false;
     }
-    glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
     glm::dvec3 rel = camera_ - s.origin;  // camera relative to the map centre
     glProgramUniform1i(program, 0, s.grid / 2);
     glProgramUniform2f(program, 1, float(-mapping_.size_m * 0.5 - rel.x), float(-mapping_.size_m * 0.5 - rel.z));
     glProgramUniform2f(program, 2, float(mapping_.texelSizeX()), float(mapping_.texelSizeZ()));
     glProgramUniform2f(program, 3, float(mapping_.height_scale_m), float(mapping_.height_offset_m - rel.y));
+    glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
+    bindTiles(program, 10);
+    glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
+                       s.lod_metric == LodMetric::Error ? 1 : 0);
+    glBindTextureUnit(binding::kTex4, bias_texture_.id());
+    glBindTextureUnit(binding::kTex0, height_.id());
+    glBindVertexArray(vao_.id());
+}
+
+void Terrain::draw(const TerrainSettings& s, GLuint program) {
+    if (instances_.empty()) return;
+    glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
+    setVertexState(s, program);
+    glm::dvec3 rel = camera_ - s.origin;
     glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
     glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
     glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
     glProgramUniform1i(program, 7, int(s.view));
     glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
-    glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
-    bindTiles(program, 10);
-    glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
-                       s.lod_metric == LodMetric::Error ? 1 : 0);
     glProgramUniform1f(program, 13, s.max_error_px);
-    glBindTextureUnit(binding::kTex4, bias_texture_.id());
-    glBindTextureUnit(binding::kTex0, height_.id());
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
-    glBindVertexArray(vao_.id());
     glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances_.size()));
+}
+
+void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot) {
+    if (instances.empty()) return;
+    if (!shadow_instances_) {  // only scenes with sun shadows pay for it
+        GLint align = 256;
+        glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
+        GLsizeiptr bytes = GLsizeiptr(kMaxInstances * sizeof(TerrainInstance));
+        shadow_slot_bytes_ = (bytes + align - 1) / align * align;
+        shadow_instances_ = gl::Buffer::create(shadow_slot_bytes_ * kShadowSlots, nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                               "terrain shadow instances");
+    }
+    const GLsizeiptr bytes = GLsizeiptr(instances.size() * sizeof(TerrainInstance));
+    const GLintptr offset = shadow_slot_bytes_ * std::clamp(slot, 0, kShadowSlots - 1);
+    glNamedBufferSubData(shadow_instances_.id(), offset, bytes, instances.data());
+    setVertexState(s, program);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_instances_.id(), offset, bytes);
+    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size()));
 }
 
 void Terrain::drawBounds(GLuint program) {
@@ -267,7 +310,8 @@ std::size_t Terrain::memoryBytes() const {
     std::size_t texels = std::size_t(tiles_.layer.x) * std::size_t(tiles_.layer.y) * std::size_t(tiles_.count.x * tiles_.count.y);
     return tree_.memoryBytes() + errors_.memoryBytes() + bias_.memoryBytes() + bias_.corners().size() * sizeof(float) /* its texture */ +
            map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
-           std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) + std::size_t(bounds_buffer_.size());
+           std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) + std::size_t(bounds_buffer_.size()) +
+           std::size_t(shadow_instances_.size());
 }
 
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
@@ -275,8 +319,6 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
     struct Data {
         SceneTargets t;
     };
-    terrain.select(rc.view.position, glm::dmat4(rc.matrices.view_proj), s,
-                   screenErrorScale(rc.view.fov_deg, rc.view.height));
     const Data& d = graph.addPass<Data>("terrain.gbuffer",
         [&](PassBuilder& b, Data& data) {
             data.t = targets;

@@ -54,11 +54,13 @@ public:
     double heightAt(double x, double z) const;
 
     // Selects nodes for a camera (world position, camera-relative view-projection) and fills
-    // the instance list. error_scale is screenErrorScale() of the view: the LOD keeps the
-    // vertical screen error within s.max_error_px for it. Reuse the result for shadow passes
-    // with cullSelection() against the shadow frustum (one selection per frame).
+    // the instance list with those in its frustum. error_scale is screenErrorScale() of the
+    // view: the LOD keeps the vertical screen error within s.max_error_px for it. With
+    // `caster_frustum` (the view frustum widened towards the sun, shadows/cascades.h) the
+    // selection covers it instead, and shadow passes draw parts of it (shadowInstances()):
+    // one selection per frame, so casters and receivers share one LOD.
     const Selection& select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
-                            double error_scale);
+                            double error_scale, const Frustum* caster_frustum = nullptr);
     const Selection& selection() const { return selection_; }
     const std::vector<TerrainInstance>& instances() const { return instances_; }
     const GridErrors& gridErrors() const { return errors_; }
@@ -67,6 +69,13 @@ public:
 
     // Draws the current instances with the bound program's terrain uniforms set.
     void draw(const TerrainSettings& s, GLuint program);  // uploads a remade bias first
+
+    // The instances of the current selection inside planes (camera-relative), for a shadow pass.
+    void shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const;
+    // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS) into slot
+    // 0..kShadowSlots-1 of the shadow instance buffer (made on first use).
+    static constexpr int kShadowSlots = 8;
+    void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot);
     // Draws the selected nodes' boxes as lines (debug view; its buffer is made on first use).
     void drawBounds(GLuint program);
 
@@ -80,13 +89,19 @@ public:
 
 private:
     Terrain() = default;
+    // Appends the draw instances (quadrants) of nodes to out, at most kMaxInstances in all.
+    void appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out) const;
+    // Sets the vertex stage's terrain uniforms and textures (the shadow pass needs only these).
+    void setVertexState(const TerrainSettings& s, GLuint program);
 
     TerrainSettings source_;  // what was loaded (file, mapping)
     Heightmap map_;
     TerrainMapping mapping_;
     MinMaxQuadtree tree_;
     LodSettings lod_;
-    Selection selection_;
+    Selection selection_;       // what select() chose: the view's nodes, or the caster frustum's
+    Selection visible_;         // the view's nodes of a caster selection
+    mutable Selection culled_;  // scratch for shadowInstances()
     GridErrors errors_;
     DistanceBias bias_;
     std::array<double, 7> bias_key_{};  // what bias_ and lod_.base_range_m were made for
@@ -97,7 +112,8 @@ private:
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_;
-    gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_;
+    gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_, shadow_instances_;
+    GLsizeiptr shadow_slot_bytes_ = 0;
     gl::VertexArray vao_;
     GLsizei index_count_ = 0;
     std::size_t max_instances_ = 0;

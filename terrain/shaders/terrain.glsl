@@ -40,6 +40,12 @@ float surfaceSample(vec2 t) {
 }
 
 #ifdef VERTEX_SHADER
+#ifdef SHADOW_PASS
+// A sun shadow cascade (shadows/cascades.h): camera-relative world -> clip x, y and depth. The
+// vertices morph for the main camera (distances from the camera-relative origin), so the
+// caster is the very surface the view shows.
+layout(location = 16) uniform mat4 u_shadow_matrix;
+#endif
 out vec3 v_rel;        // camera-relative position (m)
 out vec2 v_texel;      // heightmap texel coordinates
 out float v_sample;    // heightmap value (for material bands)
@@ -99,11 +105,19 @@ void main() {
     v_grid = grid;
     v_lod = vec2(inst.a.w, 0.0);
     v_morph = morph;
+#ifdef SHADOW_PASS
+    gl_Position = u_shadow_matrix * vec4(v_rel, 1.0);
+#else
     gl_Position = u_view_proj * vec4(v_rel, 1.0);
+#endif
 }
 #endif
 
-#ifdef FRAGMENT_SHADER
+#if defined(FRAGMENT_SHADER) && defined(SHADOW_PASS)
+void main() {}  // depth only
+#endif
+
+#if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS)
 layout(binding = BINDING_TEX_2) uniform sampler2DArray u_albedo;  // sRGB albedo, A = roughness
 layout(binding = BINDING_TEX_3) uniform sampler2DArray u_detail;  // tangent-space normals
 
