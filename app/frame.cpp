@@ -29,6 +29,12 @@ std::vector<ProgramKey> allPrograms() {
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
     programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_SUN_SHADOW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"SHADOW_TERM_VIEW"}});
+    for (auto& [file, defines] : shadowPrograms()) programs.push_back({file, defines});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
         programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
@@ -185,6 +191,30 @@ void addPresentPass(FrameGraph& graph, const RenderContext& rc, TextureHandle di
 
 }  // namespace
 
+SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                                        const ViewParams* fit_view, FrameReport& report) {
+    const glm::dmat4 view_proj(rc.matrices.view_proj);
+    const double error_scale = screenErrorScale(rc.view.fov_deg, rc.view.height);
+    const glm::dvec3 sun = sunDirection(s.sky);
+    if (!sunCastsShadows(s.shadows, sun)) {
+        sun_shadows_.reset();  // no sun shadows: no passes, no shadow map
+        terrain_->select(rc.view.position, view_proj, s.terrain, error_scale);
+        return {};
+    }
+    if (!sun_shadows_) sun_shadows_ = std::make_unique<SunShadows>();
+    sun_shadows_->prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view);
+    // One selection covers the view and every caster of its shadows (one LOD for both).
+    const Frustum casters = sun_shadows_->casterFrustum(view_proj);
+    terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters);
+    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain);
+    const SunShadowStats& st = sun_shadows_->stats();
+    report.counters["shadows.cascades"] = double(st.cascades);
+    report.counters["shadows.drawn"] = double(st.drawn);
+    report.counters["shadows.caster_instances"] = double(st.caster_instances);
+    report.counters["shadows.memory_bytes"] = double(st.memory_bytes);
+    return shadows;
+}
+
 void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                         const FrameRequest& request, SceneTargets& scene, FrameReport& report) {
     if (sceneLightCount(s.lights) == 0) {
@@ -215,7 +245,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     const bool terrain = s.terrain.enabled && terrain_;
     SceneTargets scene = addClearPass(graph, rc, terrain);
     FrameReport report;
+    SunShadowInput shadows;
+    const bool shadow_view = s.debug.view == DebugView::Shadow;
     if (terrain) {
+        shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report);
         addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
@@ -226,13 +259,15 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
         if (s.ssao.enabled) scene.ao = addSsaoPasses(graph, rc, scene, s.ssao);
-        addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene);
-        addLocalLightPasses(graph, rc, s, request, scene, report);
+        addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene, shadows, s.debug.view);
+        if (!shadow_view) addLocalLightPasses(graph, rc, s, request, scene, report);
     } else {
         local_lights_.reset();
     }
-    if (s.debug.grid) addGridPass(graph, rc, s.debug, s.sky, scene);
-    if (s.sky.enabled) {
+    if (s.debug.grid && !shadow_view) addGridPass(graph, rc, s.debug, s.sky, scene);
+    if (shadow_view) {
+        // [debug] view = shadow shows the HDR target as lighting.sun left it: nothing on top.
+    } else if (s.sky.enabled) {
         if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
         sky_->addPasses(graph, rc, s.sky, scene);
     } else {
@@ -241,7 +276,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
     TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s);
-    if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug, scene);
+    if (s.debug.view == DebugView::ShadowMap)
+        display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
+    else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image
+        display = addDebugViewPass(graph, rc, s.debug, scene);
 
     if (request.capture_hdr || request.capture_ldr)
         addReadbackPass(graph, request.capture_hdr ? scene.hdr : display, request);

@@ -12,6 +12,7 @@
 #include "renderer/transient_pool.h"
 #include "lighting/local_lights.h"
 #include "postfx/chain.h"
+#include "shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
@@ -41,6 +42,7 @@ struct FrameRequest {
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
+    const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
 };
 
 struct FrameReport {
@@ -63,10 +65,12 @@ public:
     Terrain* terrain() { return terrain_.get(); }
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
+    SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
+    std::unique_ptr<Terrain> releaseTerrain() { return std::move(terrain_); }  // benches swap terrains
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
 
@@ -80,6 +84,10 @@ public:
     std::uint64_t frameIndex() const { return frame_; }
 
 private:
+    // Selects the terrain (widened for shadow casters when the sun casts shadows) and adds the
+    // "shadows.cascadeN" passes; returns what lighting.sun samples (invalid: no sun shadows).
+    SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                             const ViewParams* fit_view, FrameReport& report);
     void addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s, const FrameRequest& request,
                              SceneTargets& scene, FrameReport& report);
 
@@ -94,6 +102,7 @@ private:
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
+    std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes

@@ -47,9 +47,9 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {
-    static constexpr std::array<const char*, 5> views{"final", "depth", "albedo", "normals", "lights"};
+    static constexpr std::array<const char*, 8> views{"final", "depth", "albedo", "normals", "lights", "cascades", "shadow_map", "shadow"};
     v.section("debug", "debug views and helpers");
-    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel"},
+    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel, cascades = sun shadow cascade colours, shadow_map = the cascades' depth maps, shadow = the sun's visibility (white lit, black shadowed or facing away)"},
              s.view, views);
     v.field({"heat_max", "lights", "light count shown red in the lights view"}, s.heat_max, 1.0f, 65536.0f);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
@@ -216,6 +216,30 @@ void describe(SettingsVisitor& v, SsaoSettings& s) {
     v.field({"blur_depth_tolerance", "", "relative depth difference at which blur weights fall by e"}, s.blur_depth_tolerance, 0.001f, 1.0f);
 }
 
+void describe(SettingsVisitor& v, ShadowSettings& s) {
+    static constexpr std::array<const char*, 3> filters{"hard", "pcf", "pcss"};
+    v.section("shadows", "sun shadows: cascaded shadow maps, stable while flying");
+    v.field({"enabled", "", "the sun casts shadows"}, s.enabled);
+    v.field({"cascades", "", "PSSM cascades up to max_distance_m"}, s.cascades, 1, 4);
+    v.field({"resolution", "texels", "shadow map size per cascade side"}, s.resolution, 128, 4096);
+    v.field({"max_distance_m", "m", "view depth where the PSSM cascades end"}, s.max_distance_m, 1.0f, 100000.0f);
+    v.field({"split_lambda", "", "PSSM split blend: 0 uniform, 1 logarithmic"}, s.split_lambda, 0.0f, 1.0f);
+    v.field({"far_cascade", "", "one more cascade from max_distance_m to far_distance_m (distant mountains)"}, s.far_cascade);
+    v.field({"far_distance_m", "m", "where the far cascade ends"}, s.far_distance_m, 1.0f, 1000000.0f);
+    v.field({"blend_band", "", "share of a cascade's depth range that cross-fades into the next"}, s.blend_band, 0.0f, 0.5f);
+    v.choice({"filter", "", "hard (one bilinear compare), pcf (rotated Poisson disk), pcss (contact hardening)"}, s.filter, filters);
+    v.field({"pcf_taps", "", "Poisson taps per pixel (pcf, pcss)"}, s.pcf_taps, 1, 64);
+    v.field({"filter_radius_texels", "texels", "PCF kernel radius in texels of the first cascade"}, s.filter_radius_texels, 0.0f, 16.0f);
+    v.field({"sun_size_scale", "", "PCSS penumbra relative to the drawn sun's angular size"}, s.sun_size_scale, 0.0f, 100.0f);
+    v.field({"max_penumbra_texels", "texels", "PCSS: largest kernel radius"}, s.max_penumbra_texels, 1.0f, 64.0f);
+    v.field({"slope_bias", "", "slope-scaled depth bias while drawing casters (glPolygonOffset factor)"}, s.slope_bias, 0.0f, 16.0f);
+    v.field({"depth_bias_texels", "texels", "constant depth bias in texel sizes"}, s.depth_bias_texels, 0.0f, 16.0f);
+    v.field({"normal_offset_texels", "texels", "receiver offset along its normal (times the sine of the sun angle)"}, s.normal_offset_texels, 0.0f, 16.0f);
+    v.field({"min_sun_elevation_deg", "deg", "below this sun elevation there are no sun shadows (and no shadow passes)"}, s.min_sun_elevation_deg, -10.0f, 90.0f);
+    v.field({"stabilize", "", "sphere-fitted cascades snapped to whole texels (off: tight boxes that shimmer)"}, s.stabilize);
+    v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
+}
+
 }  // namespace
 
 bool isValidListName(std::string_view name) {
@@ -231,6 +255,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.debug);
     describe(v, s.terrain);
     describe(v, s.sky);
+    describe(v, s.shadows);
     describe(v, s.lights);  // lighting/light_settings.cpp
     describe(v, s.postfx);
     describe(v, s.exposure);

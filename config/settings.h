@@ -50,7 +50,7 @@ struct CaptureSettings {
     std::string out = "out";                       //!< output directory
 };
 
-enum class DebugView : int { Final, Depth, Albedo, Normals, Lights };
+enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow };
 
 struct DebugSettings {
     DebugView view = DebugView::Final;
@@ -237,6 +237,33 @@ struct SsaoSettings {
     float blur_depth_tolerance = 0.05f;  //!< relative depth difference at which blur weights fall by e, 0.001..1
 };
 
+enum class ShadowFilter : int { Hard, Pcf, Pcss };
+
+//! Sun shadows: cascaded shadow maps (shadows/cascades.h) with PSSM splits, each cascade fitted
+//! to its view slice's bounding sphere and snapped to whole texels (stable while flying), plus
+//! an optional far cascade for distant mountains; filtered by rotated-Poisson PCF or PCSS.
+struct ShadowSettings {
+    bool enabled = true;
+    int cascades = 4;                    //!< PSSM cascades up to max_distance_m, 1..4
+    int resolution = 1024;               //!< texels per cascade side, 128..4096
+    float max_distance_m = 500.0f;       //!< m, view depth where the PSSM cascades end, 1..100000
+    float split_lambda = 0.9f;           //!< PSSM: 0 uniform, 1 logarithmic split distances, 0..1
+    bool far_cascade = true;             //!< one more cascade from max_distance_m to far_distance_m
+    float far_distance_m = 5000.0f;      //!< m, where the far cascade (and all sun shadows) end, 1..1000000
+    float blend_band = 0.1f;             //!< share of a cascade's depth range over which it cross-fades into the next (and the last fades out), 0..0.5
+    ShadowFilter filter = ShadowFilter::Pcf;  //!< hard: one bilinear compare; pcf: rotated Poisson disk; pcss: contact hardening
+    int pcf_taps = 12;                   //!< Vogel-disk taps (pcf, pcss; also the PCSS blocker search), 1..64
+    float filter_radius_texels = 1.5f;   //!< PCF kernel radius in texels of cascade 0 (others keep its world size, up to 1 texel minimum), 0..16
+    float sun_size_scale = 1.0f;         //!< PCSS: penumbra width per metre of occluder distance relative to the drawn sun's diameter, 0..100
+    float max_penumbra_texels = 12.0f;   //!< PCSS: largest kernel radius, texels, 1..64
+    float slope_bias = 1.5f;             //!< glPolygonOffset factor while drawing casters (slope-scaled), 0..16
+    float depth_bias_texels = 1.0f;      //!< constant depth bias in texel sizes of the cascade, 0..16
+    float normal_offset_texels = 1.5f;   //!< receiver moved along its normal by this many texels (scaled by the sine of the sun angle), 0..16
+    float min_sun_elevation_deg = 0.0f;  //!< deg, below this the sun casts no shadows (no passes), -10..90
+    bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
+    bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
+};
+
 struct Settings {
     WindowSettings window;
     CameraSettings camera;
@@ -244,6 +271,7 @@ struct Settings {
     DebugSettings debug;
     TerrainSettings terrain;
     SkySettings sky;
+    ShadowSettings shadows;
     LightsSettings lights;      // [lights], with the light.NAME / volume.NAME lists
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]

@@ -23,9 +23,10 @@ std::vector<std::string> lightingPrograms() {
     return {"lighting/shaders/sun.glsl"};
 }
 
-void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets) {
+void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
+                        const SunShadowInput& shadows, DebugView debug) {
     struct Data {
-        TextureHandle depth, albedo, normal, ao, hdr;
+        TextureHandle depth, albedo, normal, ao, hdr, shadow;
     };
     const Data& d = graph.addPass<Data>("lighting.sun",
         [&](PassBuilder& b, Data& data) {
@@ -33,13 +34,24 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
             if (targets.ao.valid()) data.ao = b.read(targets.ao);
+            if (shadows.valid()) data.shadow = b.read(shadows.map);
             data.hdr = b.write(targets.hdr);
         },
-        [&rc, light](const Data& data, PassContext& ctx) {
+        [&rc, light, shadows, debug](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            const std::vector<std::string> defines = data.ao.valid() ? std::vector<std::string>{"HAS_AO"}
-                                                                     : std::vector<std::string>{};
+            std::vector<std::string> defines;
+            if (data.ao.valid()) defines.push_back("HAS_AO");
+            if (data.shadow.valid()) {
+                defines.push_back("HAS_SUN_SHADOW");
+                if (debug == DebugView::Cascades) defines.push_back("SHADOW_CASCADE_VIEW");
+                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, shadows.uniforms);
+                glBindTextureUnit(binding::kShadowMap, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowMap, shadows.compare_sampler);
+                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
+            }
+            if (debug == DebugView::Shadow) defines.push_back("SHADOW_TERM_VIEW");
             glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl", defines)->id());
             if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
             glUniform3fv(0, 1, &light.sun_irradiance.x);
@@ -52,6 +64,10 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             glBlendFunc(GL_ONE, GL_ONE);
             drawFullscreen(rc);
             glDisable(GL_BLEND);
+            if (data.shadow.valid()) {
+                glBindSampler(binding::kShadowMap, 0);
+                glBindSampler(binding::kShadowDepth, 0);
+            }
         });
     targets.hdr = d.hdr;
 }

@@ -5,6 +5,7 @@
 #include "config/settings.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "shadows/sun_shadows.h"
 #include "sky/sky_lighting.h"
 
 #include <glm/vec3.hpp>
@@ -30,8 +31,10 @@ SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings);
 // Every program the lighting uses (for FrameRenderer::allPrograms()).
 std::vector<std::string> lightingPrograms();
 
-// Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO);
-// writes (adds to) targets.hdr.
-void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets);
+// Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO)
+// and the sun by the cascaded shadows when `shadows` is valid (cascade_view: tints each pixel by its
+// cascade, [debug] view = cascades); writes (adds to) targets.hdr.
+void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
+                        const SunShadowInput& shadows = {}, DebugView debug = DebugView::Final);
 
 }  // namespace vista

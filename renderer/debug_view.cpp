@@ -17,6 +17,7 @@ TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const
             if (debug.view == DebugView::Albedo) source = targets.albedo;
             if (debug.view == DebugView::Normals) source = targets.normal;
             if (debug.view == DebugView::Lights) source = targets.light_heat;
+            if (debug.view == DebugView::Shadow) source = targets.hdr;  // lighting.sun wrote the sun's visibility there
             // Without local lights there is no heat target: the lights view shows 0 everywhere.
             const bool no_heat = debug.view == DebugView::Lights && !source.valid();
             data.view = source.valid() || no_heat ? int(debug.view) : int(DebugView::Depth);

@@ -15,6 +15,9 @@ layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from belo
 #ifdef HAS_AO
 layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r), 1 = open
 #endif
+#if defined(HAS_SUN_SHADOW) || defined(SHADOW_CASCADE_VIEW)
+#include "../../shadows/shaders/shadows.glsl"
+#endif
 layout(location = 0) out vec4 o_color;
 
 // Hemisphere ambient: irradiance on a surface facing n.
@@ -30,7 +33,15 @@ void main() {
     vec3 pos = positionFromDepth((vec2(p) + 0.5) * u_viewport.zw, depth);
     vec3 v = safeNormalize(-pos);
     vec3 l = u_sun_dir.xyz;
-    vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * max(dot(s.normal, l), 0.0);
+    float ndotl = dot(s.normal, l);
+    vec3 color = vec3(0.0);
+    if (ndotl > 0.0) {
+        float shadow = 1.0;
+#ifdef HAS_SUN_SHADOW
+        shadow = sunShadow(pos, s.normal, ndotl, linearDepth(depth), gl_FragCoord.xy);
+#endif
+        color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * (ndotl * shadow);
+    }
     // Ambient: Lambert on the hemisphere irradiance, and a rough specular term from the
     // irradiance around the mirror direction (Fresnel at the view angle, damped by roughness).
     float nv = clamp(dot(s.normal, v), 0.0, 1.0);
@@ -41,6 +52,19 @@ void main() {
     ao = texelFetch(u_ao, p, 0).r;
 #endif
     color += ao * ((1.0 - fr) * s.albedo / PI * ambientIrradiance(s.normal) + fr / PI * ambientIrradiance(r));
+#ifdef SHADOW_CASCADE_VIEW
+    color *= cascadeColor(linearDepth(depth));  // [debug] view = cascades
+#endif
+#ifdef SHADOW_TERM_VIEW
+    // [debug] view = shadow: the sun's visibility alone (0 where the surface faces away).
+    float term = 0.0;
+#ifdef HAS_SUN_SHADOW
+    if (ndotl > 0.0) term = sunShadow(pos, s.normal, ndotl, linearDepth(depth), gl_FragCoord.xy);
+#else
+    term = ndotl > 0.0 ? 1.0 : 0.0;
+#endif
+    color = vec3(term);
+#endif
     o_color = vec4(color, 0.0);
 }
 #endif

@@ -2,6 +2,7 @@
 //   1 depth:   log2 of the view distance mapped to grey, infinity (sky) dark blue;
 //   2 albedo:  the G-buffer's base colour (linear, shown as sRGB by the display);
 //   3 normals: the G-buffer's world normal as colour (n * 0.5 + 0.5); unlit pixels black;
+//   7 shadow:  the sun's visibility lighting.sun wrote into the HDR target (white lit);
 //   4 lights:  heat map of local-light evaluations per pixel (lights.shade's count target),
 //              blue 0 .. green .. yellow .. red at u_heat_max and above, sky dark.
 #include "fullscreen.glsl"
@@ -41,6 +42,8 @@ void main() {
     } else if (u_mode == 3) {
         vec4 n = texelFetch(u_source, p, 0);
         c = n.w > 0.5 ? decodeNormal(n.xy) * 0.5 + 0.5 : vec3(0.0);
+    } else if (u_mode == 7) {
+        c = vec3(clamp(texelFetch(u_source, p, 0).r, 0.0, 1.0));  // sun visibility (lighting.sun, SHADOW_TERM_VIEW)
     } else if (u_mode == 4) {
         float count = u_heat_max < 0.0 ? 0.0 : texelFetch(u_source, p, 0).r;  // < 0: no local lights
         // Lights evaluated at this pixel; 0 stays dark blue so light-free areas show.

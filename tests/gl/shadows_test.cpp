@@ -1,0 +1,173 @@
+// Sun shadows under OSMesa: a pillar on a flat plane casts its shadow where geometry says (for
+// every filter), the images stay finite, and a sun at or below the horizon or shadows off
+// leave no shadow pass and no shadow map.
+#include "app/frame.h"
+#include "app/scene.h"
+#include "gl_fixture.h"
+#include "terrain/heightmap.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace vista;
+
+namespace {
+
+FrameRenderer& renderer() {
+    test::glContext();
+    static FrameRenderer r(vistaRoot());
+    return r;
+}
+
+float halfToFloat(std::uint16_t h) {
+    int e = (h >> 10) & 31, m = h & 1023;
+    float v = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m + 1024), e - 25);
+    return h & 0x8000 ? -v : v;
+}
+
+// 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in [-4, 4] m).
+const std::filesystem::path& pillarMap() {
+    static test::TempDir dir("shadows");
+    static std::filesystem::path file = [] {
+        const int n = 129;
+        Heightmap map{n, n, std::vector<float>(std::size_t(n) * n, 0.0f)};
+        for (int z = 62; z <= 66; ++z)
+            for (int x = 62; x <= 66; ++x) map.samples[std::size_t(z * n + x)] = 1.0f;
+        std::filesystem::path f = dir.path / "pillar.png";
+        REQUIRE(saveHeightmapPng16(f, map).empty());
+        return f;
+    }();
+    return file;
+}
+
+Settings pillarScene() {
+    Settings s;
+    s.terrain.heightmap = pillarMap().string();
+    s.terrain.size_m = 256.0f;
+    s.terrain.height_scale_m = 40.0f;
+    s.terrain.max_error_px = 0.25f;
+    s.debug.grid = false;
+    s.lights = {};
+    s.sky.sun_azimuth_deg = 90.0f;  // east (+x): shadows fall towards -x
+    s.sky.sun_elevation_deg = 45.0f;
+    s.ssao.enabled = false;
+    return s;
+}
+
+struct Frame {
+    std::vector<std::uint16_t> hdr;
+    FrameReport report;
+    std::uint64_t nonfinite = 0;
+    ViewParams view;
+    float luminanceAt(const glm::dvec3& world) const {  // mean over the 3x3 pixels around world's projection
+        ViewMatrices m = viewMatrices(view);
+        glm::vec4 c = m.view_proj * glm::vec4(glm::vec3(world - view.position), 1.0f);
+        int px = int((c.x / c.w * 0.5f + 0.5f) * float(view.width));
+        int py = view.height - 1 - int((c.y / c.w * 0.5f + 0.5f) * float(view.height));  // rows top first
+        float sum = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                std::size_t i = (std::size_t(std::clamp(py + dy, 0, view.height - 1)) * std::size_t(view.width) +
+                                 std::size_t(std::clamp(px + dx, 0, view.width - 1))) * 4;
+                sum += 0.2126f * halfToFloat(hdr[i]) + 0.7152f * halfToFloat(hdr[i + 1]) + 0.0722f * halfToFloat(hdr[i + 2]);
+            }
+        return sum / 9.0f;
+    }
+};
+
+Frame render(const Settings& s, const ViewParams& view) {
+    FrameRenderer& r = renderer();
+    REQUIRE(r.prepare(s).empty());
+    Frame f;
+    f.view = view;
+    FrameRequest request;
+    request.capture_hdr = &f.hdr;
+    request.count_nonfinite = true;
+    f.report = r.render(s, view, 0.0, request);
+    for (const auto& c : r.counters().collect(true)) f.nonfinite += c.value;
+    return f;
+}
+
+bool has(const std::vector<std::string>& passes, const std::string& prefix) {
+    return std::ranges::any_of(passes, [&](const std::string& p) { return p.rfind(prefix, 0) == 0; });
+}
+
+const ViewParams kAbove{{-20.0, 160.0, 0.0}, 0.0, -89.9, 70.0, 0.5, 160, 160};
+
+}  // namespace
+
+TEST_CASE("shadows GL: a pillar's shadow falls where the sun's direction puts it, for every filter") {
+    for (ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
+        CAPTURE(int(filter));
+        Settings s = pillarScene();
+        s.shadows.filter = filter;
+        Frame f = render(s, kAbove);
+        CHECK(f.nonfinite == 0);
+        CHECK(has(f.report.executed, "shadows.cascade"));
+        // The pillar top (40 m, x in [-4, 4]) under a 45 deg sun from +x shades the ground from
+        // x = -4 to x = -44 for |z| < 4; the ground elsewhere is lit.
+        const float lit = f.luminanceAt({-25.0, 0.0, 25.0});
+        CHECK(lit > 0.0f);
+        CHECK(f.luminanceAt({25.0, 0.0, 0.0}) == doctest::Approx(lit).epsilon(0.05));  // sun side
+        for (double x : {-12.0, -25.0, -38.0}) {
+            CAPTURE(x);
+            CHECK(f.luminanceAt({x, 0.0, 0.0}) < 0.35f * lit);  // in the shadow: sky light only
+        }
+        CHECK(f.luminanceAt({-52.0, 0.0, 0.0}) > 0.9f * lit);  // past the shadow's tip
+        CHECK(f.luminanceAt({-25.0, 0.0, 10.0}) > 0.9f * lit);  // beside it
+    }
+}
+
+TEST_CASE("shadows GL: a lower sun makes a longer shadow in the opposite direction") {
+    Settings s = pillarScene();
+    s.sky.sun_azimuth_deg = 270.0f;  // west: shadows towards +x
+    s.sky.sun_elevation_deg = 60.0f;  // 40 / tan(60) = 23 m long
+    ViewParams v = kAbove;
+    v.position.x = 20.0;
+    Frame f = render(s, v);
+    const float lit = f.luminanceAt({25.0, 0.0, 25.0});
+    CHECK(f.luminanceAt({15.0, 0.0, 0.0}) < 0.35f * lit);
+    CHECK(f.luminanceAt({36.0, 0.0, 0.0}) > 0.9f * lit);
+    CHECK(f.luminanceAt({-15.0, 0.0, 0.0}) > 0.9f * lit);
+}
+
+TEST_CASE("shadows GL: sun at and below the horizon, or shadows off: no shadow pass and no shadow map") {
+    for (float elevation : {0.0f, -3.0f, -18.0f}) {
+        Settings s = pillarScene();
+        s.sky.sun_elevation_deg = elevation;
+        Frame f = render(s, kAbove);
+        CHECK(f.nonfinite == 0);
+        CHECK_FALSE(has(f.report.executed, "shadows."));
+        CHECK(renderer().sunShadows() == nullptr);
+    }
+    Settings s = pillarScene();
+    s.shadows.enabled = false;
+    Frame f = render(s, kAbove);
+    CHECK_FALSE(has(f.report.executed, "shadows."));
+    CHECK(renderer().sunShadows() == nullptr);
+    // And back on: the passes return.
+    s.shadows.enabled = true;
+    CHECK(has(render(s, kAbove).report.executed, "shadows.cascade"));
+    CHECK(renderer().sunShadows() != nullptr);
+}
+
+TEST_CASE("shadows GL: the debug views (cascade colours, shadow map) and grazing sun stay finite") {
+    Settings s = pillarScene();
+    s.sky.sun_elevation_deg = 2.0f;
+    for (DebugView view : {DebugView::Final, DebugView::Cascades, DebugView::ShadowMap}) {
+        s.debug.view = view;
+        Frame f = render(s, kAbove);
+        CHECK(f.nonfinite == 0);
+    }
+    s.debug.view = DebugView::ShadowMap;  // the display image (LDR) is the shadow-map view
+    REQUIRE(renderer().prepare(s).empty());
+    std::vector<std::uint8_t> ldr;
+    FrameRequest request;
+    request.capture_ldr = &ldr;
+    FrameReport report = renderer().render(s, kAbove, 0.0, request);
+    CHECK(has(report.executed, "shadows.view"));
+    CHECK(has(report.executed, "shadows.cascade"));
+    CHECK_FALSE(has(report.executed, "lighting.sun"));  // the final image is not needed
+}
