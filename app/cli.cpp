@@ -3,6 +3,7 @@
 #include "app/cli.h"
 
 #include "app/bench_lights.h"
+#include "app/bench_shadows.h"
 #include "app/bench_sky.h"
 #include "app/bench_terrain.h"
 #include "app/camera_path.h"
@@ -201,6 +202,17 @@ int runCli(int argc, char** argv) {
     bench_sky->add_option("--backend", sky_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_sky->add_option("--json", sky_json, "also write the results as JSON");
 
+    SceneOptions shadows_scene;
+    BenchShadowsOptions shadows_opts;
+    std::string shadows_backend = "osmesa", shadows_size, shadows_json;
+    bool shadows_no_reference = false;
+    CLI::App* bench_shadows = bench_cmd->add_subcommand("shadows", "sun shadows: shimmer, acne, error against an 8192-texel reference, cost");
+    shadows_scene.add(bench_shadows);
+    bench_shadows->add_option("--size", shadows_size, "frame size WxH (default 320x180)");
+    bench_shadows->add_option("--backend", shadows_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
+    bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
+
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
@@ -255,6 +267,15 @@ int runCli(int argc, char** argv) {
         lights_opts.json = lights_json;
         lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchLights(s, lights_opts);
+    }
+    if (*bench_shadows) {
+        Settings s;
+        if (!shadows_scene.load(s)) return 2;
+        if (!shadows_size.empty() && !parseSize(shadows_size, shadows_opts.width, shadows_opts.height)) return 2;
+        shadows_opts.json = shadows_json;
+        shadows_opts.reference = !shadows_no_reference;
+        shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchShadows(s, shadows_opts);
     }
     if (*bench_sky) {
         Settings s;
