@@ -39,6 +39,7 @@ std::vector<ProgramKey> allPrograms() {
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -215,13 +216,25 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     const bool terrain = s.terrain.enabled && terrain_;
     SceneTargets scene = addClearPass(graph, rc, terrain);
     FrameReport report;
+    const bool grass = terrain && s.grass.enabled;
     if (terrain) {
+        // Beyond the blades the terrain's grass band takes their mean colour.
+        const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
+        terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
+                              glm::vec2(fade_start, s.grass.radius_m));
         addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
         report.counters["terrain.nodes"] = double(c.nodes);
         report.counters["terrain.draws"] = double(c.draws);
         report.counters["terrain.select_ms"] = c.select_ms;
+    }
+    if (grass) {
+        if (!grass_) grass_ = std::make_unique<Grass>();
+        grass_->addPasses(graph, rc, *terrain_, s.terrain, s.grass, scene, counters_, request.count_grass);
+        report.counters["grass.considered"] = double(grass_->considered());
+    } else {
+        grass_.reset();  // a disabled feature keeps nothing allocated
     }
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);

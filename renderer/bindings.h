@@ -20,5 +20,7 @@ constexpr int kLightIndices = 4;   // shader storage: light index lists
 constexpr int kLightHash = 5;      // shader storage: hashed light octree tables
 constexpr int kLightSpheres = 6;   // shader storage: view-space bounding spheres (culling)
 constexpr int kAux = 7;            // shader storage: a pass's second counter or pool
+constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (grass/shaders/grass_common.glsl)
+constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
 
 }  // namespace vista::binding

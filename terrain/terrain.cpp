@@ -234,6 +234,8 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) {
     glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
                        s.lod_metric == LodMetric::Error ? 1 : 0);
     glProgramUniform1f(program, 13, s.max_error_px);
+    glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
+    glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
     glBindTextureUnit(binding::kTex4, bias_texture_.id());
     glBindTextureUnit(binding::kTex0, height_.id());
     glBindTextureUnit(binding::kTex1, normals_.id());

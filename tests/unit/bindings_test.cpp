@@ -23,4 +23,6 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kLightHash == BINDING_LIGHT_HASH);
     CHECK(binding::kLightSpheres == BINDING_LIGHT_SPHERES);
     CHECK(binding::kAux == BINDING_AUX);
+    CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
+    CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);
 }
