@@ -2,6 +2,7 @@
 // of what the shaders compute, for the tests.
 #include "grass/grass_placement.h"
 
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -45,7 +46,7 @@ float valueNoise(glm::vec2 q) {
 GrassLayout grassLayout(const GrassSettings& s) {
     GrassLayout l;
     l.cell_m = s.cell_m;
-    const double half = 0.75 * s.radius_m;
+    const double half = 0.8 * s.radius_m;
     l.cells = int(std::ceil(2.0 * half / l.cell_m)) + 1;
     l.blades_per_cell = std::max(1, int(std::lround(double(s.density) * l.cell_m * l.cell_m)));
     const std::int64_t cells = std::int64_t(l.cells) * l.cells;
@@ -55,7 +56,13 @@ GrassLayout grassLayout(const GrassSettings& s) {
 }
 
 glm::ivec2 grassBoxMin(const GrassLayout& layout, glm::dvec2 eye_xz, glm::dvec3 forward) {
-    glm::dvec2 centre = eye_xz + layout.shift_m * glm::dvec2(forward.x, forward.z);
+    // Along the view's heading (also when looking down: the frustum's upper edge still
+    // reaches out ahead); straight up or down keeps the box centred.
+    glm::dvec2 heading(forward.x, forward.z);
+    double len = glm::length(heading);
+    // Full shift for level views, less as the view turns down and sees around the camera.
+    heading = len > 1e-9 ? heading / len * std::min(1.0, 1.5 * len) : glm::dvec2(0.0);
+    glm::dvec2 centre = eye_xz + layout.shift_m * heading;
     glm::dvec2 c = centre / layout.cell_m - double(layout.cells) * 0.5;
     return {int(std::floor(c.x + 0.5)), int(std::floor(c.y + 0.5))};
 }

@@ -40,13 +40,13 @@ struct GrassLayout {
     double shift_m = 0.0;     // box centre ahead of the camera at a level view (m)
     std::int64_t candidates() const { return std::int64_t(cells) * cells * blades_per_cell; }
 };
-// Box size and blades per cell for the settings: the box (half side 0.75 radius, plus one cell
+// Box size and blades per cell for the settings: the box (half side 0.8 radius, plus one cell
 // for the snapping to whole cells) shifted forward_shift * radius ahead holds every point
-// within radius_m of the camera inside a horizontal field of view up to about 95 deg.
+// within radius_m of the camera that a 60 deg (vertical) 16:9 view sees (tested).
 GrassLayout grassLayout(const GrassSettings& s);
 
-// The box for a camera at eye_xz looking along forward (3D unit vector; its horizontal part,
-// cos(pitch) long, scales the shift): its min cell (world cell coordinates).
+// The box for a camera at eye_xz looking along forward (3D unit vector; the box moves along
+// its horizontal heading): its min cell (world cell coordinates).
 glm::ivec2 grassBoxMin(const GrassLayout& layout, glm::dvec2 eye_xz, glm::dvec3 forward);
 // The world cell slot s shows for a box starting at box_min (integer form, as the shader).
 glm::ivec2 grassWrapCell(glm::ivec2 slot, glm::ivec2 box_min, int cells);
