@@ -81,6 +81,8 @@ void Grass::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terra
             glUseProgram(program);
             glProgramUniform4i(program, 0, box_min.x, box_min.y, l.cells, l.blades_per_cell);
             glProgramUniform2i(program, 1, int(camera_cell.x), int(camera_cell.y));
+            const glm::ivec2 box_mod = grassWrapCell(box_min, glm::ivec2(0), l.cells);  // box_min mod cells, >= 0
+            glProgramUniform2i(program, 23, box_mod.x, box_mod.y);
             glProgramUniform4f(program, 2, float(frac.x), float(frac.y), float(l.cell_m), float(l.candidates()));
             glProgramUniform4f(program, 3, s.radius_m, std::min(s.thin_start, 0.999f) * s.radius_m, s.far_keep,
                                s.lod_distance_m);

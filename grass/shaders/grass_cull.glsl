@@ -43,6 +43,7 @@ layout(location = 18) uniform vec4 u_wind_b;       // inv gust scale, sway phase
 layout(location = 19) uniform vec4 u_wind_c;       // sway, unused x3
 layout(location = 20) uniform vec4 u_color;        // tip colour (linear), colour variation
 layout(location = 21) uniform vec4 u_dry;          // dry colour (linear), dry fraction
+layout(location = 23) uniform ivec2 u_box_mod;     // box min cell modulo cells per side (0..cells-1)
 layout(location = 22) uniform uvec4 u_capacity;    // near, far list capacity; far list start; count blades (0/1)
 
 shared uint s_drawn;
@@ -84,10 +85,9 @@ bool cull(uint id, out GrassBlade blade, out uint list) {
     int per_cell = u_box.w, cells = u_box.z;
     int slot_index = int(id) / per_cell, j = int(id) - slot_index * per_cell;
     ivec2 slot = ivec2(slot_index % cells, slot_index / cells);
-    // Integer toroidal wrap: the one world cell congruent to the slot inside the box.
-    ivec2 r = (slot - u_box.xy) % cells;
-    r += ivec2(r.x < 0 ? cells : 0, r.y < 0 ? cells : 0);
-    ivec2 cell = u_box.xy + r;
+    // Integer toroidal wrap: the one world cell congruent to the slot inside the box (GLSL's %
+    // is undefined for negative operands: u_box_mod is the box's min cell mod cells, >= 0).
+    ivec2 cell = u_box.xy + (slot - u_box_mod + cells) % cells;
     uint h = grassHash(uint(cell.x), uint(cell.y), uint(j));
     vec2 offset = vec2(grassRandom(h, 0u), grassRandom(h, 1u));
     vec2 rel_xz = (vec2(cell - u_camera_cell) + offset - u_cell.xy) * u_cell.z;
