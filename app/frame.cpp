@@ -231,8 +231,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (grass) {
         if (!grass_) grass_ = std::make_unique<Grass>();
-        grass_->addPasses(graph, rc, *terrain_, s.terrain, s.grass, scene, counters_, request.count_grass);
-        report.counters["grass.considered"] = double(grass_->considered());
+        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
+        if (reach) grass_->addPasses(graph, rc, *terrain_, s.terrain, s.grass, scene, counters_, request.count_grass);
+        report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
     } else {
         grass_.reset();  // a disabled feature keeps nothing allocated
     }

@@ -26,6 +26,31 @@ std::vector<std::pair<std::string, std::vector<std::string>>> grassPrograms() {
     return {{"grass/shaders/grass_cull.glsl", {}}, {"grass/shaders/grass.glsl", {}}};
 }
 
+bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const GrassSettings& s, const glm::dvec3& eye) {
+    // The highest point under the square of side 2 radius_m around the eye, from the min/max
+    // quadtree at the finest level whose nodes are at least that large (at most 2 x 2 nodes).
+    const MinMaxQuadtree& tree = terrain.quadtree();
+    if (tree.levels() == 0) return true;
+    const TerrainMapping& m = terrain.mapping();
+    const double r = s.radius_m;
+    int level = 0;
+    while (level + 1 < tree.levels() &&
+           double(tree.leafTexels() << level) * std::min(m.texelSizeX(), m.texelSizeZ()) < 2.0 * r)
+        ++level;
+    const double n = double(tree.leafTexels() << level);
+    const glm::ivec2 nodes = tree.nodesPerSide(level);
+    auto node = [&](double world, double origin, double texel, int count) {
+        double t = (world - origin + m.size_m * 0.5) / texel / n;
+        return std::clamp(int(std::floor(t)), 0, count - 1);
+    };
+    const int x0 = node(eye.x - r, ts.origin.x, m.texelSizeX(), nodes.x), x1 = node(eye.x + r, ts.origin.x, m.texelSizeX(), nodes.x);
+    const int z0 = node(eye.z - r, ts.origin.z, m.texelSizeZ(), nodes.y), z1 = node(eye.z + r, ts.origin.z, m.texelSizeZ(), nodes.y);
+    double top = -1e300;
+    for (int z = z0; z <= z1; ++z)
+        for (int x = x0; x <= x1; ++x) top = std::max(top, double(tree.minMax(level, x, z).y));
+    return eye.y - (ts.origin.y + top) < r;
+}
+
 void Grass::allocate(const GrassSettings& s) {
     GrassLayout layout = grassLayout(s);
     if (allocated_ && layout.cells == layout_.cells && layout.blades_per_cell == layout_.blades_per_cell &&

@@ -48,6 +48,11 @@ private:
     gl::Buffer blades_, draws_;
 };
 
+// False when the eye is more than radius_m above the highest terrain within radius_m of it
+// (min/max quadtree): no blade can be in reach, so the frame adds no grass pass (the Grass
+// object and its buffers stay).
+bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const GrassSettings& s, const glm::dvec3& eye);
+
 // Bytes of one culled blade on the GPU (GrassBlade in grass_common.glsl).
 constexpr std::size_t kGrassBladeBytes = 48;
 

@@ -152,6 +152,16 @@ TEST_CASE("gl: grass passes run after the terrain with finite output; off, no pa
     }
     CHECK(renderer().grass() != nullptr);
 
+    // Higher above the terrain's top than the blades reach: nothing to draw, no grass pass.
+    ViewParams high = view;
+    high.position.y = 0.3 * kHeightScale + s.grass.radius_m + 1.0;
+    Frame above = render(s, high, 3.0);
+    CHECK_FALSE(contains(above.report.executed, "grass.cull"));
+    CHECK_FALSE(contains(above.report.executed, "grass.gbuffer"));
+    CHECK(above.report.counters.at("grass.considered") == 0.0);
+    high.position.y -= 3.0;
+    CHECK(contains(render(s, high, 3.0).report.executed, "grass.cull"));
+
     for (int variant = 0; variant < 2; ++variant) {
         Settings off = s;
         (variant == 0 ? off.grass.enabled : off.terrain.enabled) = false;
