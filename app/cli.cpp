@@ -2,6 +2,7 @@
 // the window loop, the capture runner or the checker.
 #include "app/cli.h"
 
+#include "app/bench_grass.h"
 #include "app/bench_lights.h"
 #include "app/bench_shadows.h"
 #include "app/bench_sky.h"
@@ -212,6 +213,18 @@ int runCli(int argc, char** argv) {
     bench_shadows->add_option("--backend", shadows_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
+    SceneOptions grass_scene;
+    BenchGrassOptions grass_opts;
+    std::string grass_backend = "osmesa", grass_size, grass_json;
+    std::vector<float> grass_densities;
+    CLI::App* bench_grass = bench_cmd->add_subcommand("grass", "grass passes: blades drawn and GPU cost at a few densities");
+    grass_scene.add(bench_grass);
+    bench_grass->add_option("--densities", grass_densities, "blades per m^2, e.g. 4,8,16,24,48 (the default)")
+        ->delimiter(',')->check(CLI::Range(0.25f, 400.0f));
+    bench_grass->add_option("--size", grass_size, "frame size WxH (default 640x360)");
+    bench_grass->add_option("--frames", grass_opts.frames, "timed frames per density, after two warm-up frames")->check(CLI::Range(1, 1000));
+    bench_grass->add_option("--backend", grass_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_grass->add_option("--json", grass_json, "also write the results as JSON");
 
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
@@ -276,6 +289,15 @@ int runCli(int argc, char** argv) {
         shadows_opts.reference = !shadows_no_reference;
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(s, shadows_opts);
+    }
+    if (*bench_grass) {
+        Settings s;
+        if (!grass_scene.load(s)) return 2;
+        if (!grass_size.empty() && !parseSize(grass_size, grass_opts.width, grass_opts.height)) return 2;
+        if (!grass_densities.empty()) grass_opts.densities = grass_densities;
+        grass_opts.json = grass_json;
+        grass_opts.backend = grass_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchGrass(s, grass_opts);
     }
     if (*bench_sky) {
         Settings s;

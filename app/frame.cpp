@@ -45,6 +45,7 @@ std::vector<ProgramKey> allPrograms() {
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -247,14 +248,27 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     FrameReport report;
     SunShadowInput shadows;
     const bool shadow_view = s.debug.view == DebugView::Shadow;
+    const bool grass = terrain && s.grass.enabled;
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report);
+        // Beyond the blades the terrain's grass band takes their mean colour.
+        const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
+        terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
+                              glm::vec2(fade_start, s.grass.radius_m));
         addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
         report.counters["terrain.nodes"] = double(c.nodes);
         report.counters["terrain.draws"] = double(c.draws);
         report.counters["terrain.select_ms"] = c.select_ms;
+    }
+    if (grass) {
+        if (!grass_) grass_ = std::make_unique<Grass>();
+        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
+        if (reach) grass_->addPasses(graph, rc, *terrain_, s.terrain, s.grass, scene, counters_, request.count_grass);
+        report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
+    } else {
+        grass_.reset();  // a disabled feature keeps nothing allocated
     }
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "config/settings.h"
+#include "grass/grass.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_timers.h"
@@ -40,6 +41,7 @@ struct FrameRequest {
     std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear), top row first
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
+    bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
@@ -66,6 +68,7 @@ public:
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
+    Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -103,6 +106,7 @@ private:
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
+    std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes

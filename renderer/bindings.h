@@ -23,5 +23,7 @@ constexpr int kAux = 7;            // shader storage: a pass's second counter or
 constexpr int kShadowUniforms = 2; // uniform block: ShadowUniforms (shadows/shaders/shadows.glsl)
 constexpr int kShadowMap = 8;      // texture unit: sun cascades, depth compare (sampler2DArrayShadow)
 constexpr int kShadowDepth = 9;    // texture unit: the same cascades, raw depth (PCSS blocker search)
+constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (grass/shaders/grass_common.glsl)
+constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
 
 }  // namespace vista::binding

@@ -262,6 +262,8 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) {
     glProgramUniform1i(program, 7, int(s.view));
     glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
     glProgramUniform1f(program, 13, s.max_error_px);
+    glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
+    glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());

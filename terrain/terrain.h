@@ -67,6 +67,13 @@ public:
     const DistanceBias& distanceBias() const { return bias_; }
     const TerrainCounters& counters() const { return counters_; }
 
+    // Colour the grass band takes beyond the grass blades (linear albedo, strength; strength 0
+    // = none) between fade.x and fade.y metres from the camera. Set by the grass feature.
+    void setFarGrass(const glm::vec4& color_strength, const glm::vec2& fade) {
+        far_grass_ = color_strength;
+        far_grass_fade_ = fade;
+    }
+
     // Draws the current instances with the bound program's terrain uniforms set.
     void draw(const TerrainSettings& s, GLuint program);  // uploads a remade bias first
 
@@ -84,6 +91,8 @@ public:
     const Heightmap& heightmap() const { return map_; }
     std::size_t memoryBytes() const;
     GLuint heightTexture() const { return height_.id(); }
+    GLuint normalTexture() const { return normals_.id(); }   // world normals (RGBA8 snorm tiles)
+    GLuint albedoTexture() const { return albedo_.id(); }    // material albedo array (sRGB, A = roughness)
     // Sets the tile uniforms (ivec4 count.xy, span; vec4 layer.xy, map size) at location, location + 1.
     void bindTiles(GLuint program, GLint location) const;
 
@@ -109,6 +118,8 @@ private:
     std::vector<TerrainInstance> instances_;
     TerrainCounters counters_;
     glm::dvec3 camera_{0.0};
+    glm::vec4 far_grass_{0.0f};
+    glm::vec2 far_grass_fade_{0.0f, 1.0f};
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_;

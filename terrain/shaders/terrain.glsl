@@ -6,6 +6,7 @@
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
 #include "tiles.glsl"
+#include "material.glsl"
 
 struct Instance {
     vec4 a;  // camera-relative x, z of the quadrant's min corner (m), grid step in x (m), LOD level
@@ -126,6 +127,8 @@ layout(location = 5) uniform vec4 u_material;  // band_jitter, rock_slope, 1 / t
 layout(location = 6) uniform vec2 u_tex_offset;  // camera x, z modulo the texture period (m)
 layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 morph, 3 normals, 4 screen error
 layout(location = 8) uniform int u_wireframe;
+layout(location = 14) uniform vec4 u_grass_far;   // grass blades' mean albedo (linear), strength (0: no grass)
+layout(location = 15) uniform vec2 u_grass_fade;  // distance (m) where the far grass colour starts, and is full
 
 in vec3 v_rel;
 in vec2 v_texel;
@@ -187,9 +190,8 @@ void main() {
         vec4 a0;
         vec3 d0;
         layerSample(ROCK, world_xz * (u_material.z * 0.031), a0, d0);
-        float h = v_sample + (a0.g - 0.45) * 2.0 * u_material.x;
-        float bands = clamp((h - u_bands.x) / u_bands.w, 0.0, 1.0) + clamp((h - u_bands.y) / u_bands.w, 0.0, 1.0) +
-                      clamp((h - u_bands.z) / u_bands.w, 0.0, 1.0);
+        float h = v_sample + bandJitter(a0.g, u_material.x);
+        float bands = materialBands(h, u_bands);
         const int order[4] = int[](SAND, GRASS, ROCK, SNOW);
         int lower = int(min(floor(bands), 3.0));
         float t = bands - float(lower);
@@ -201,8 +203,11 @@ void main() {
         vec3 detail = mix(detail_a, detail_b, t);
         // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar so cliffs
         // do not stretch. Snow holds on flatter ground only.
-        float rock = smoothstep(u_material.y + 0.06, u_material.y - 0.06, n.y);
-        float dirt = 0.7 * smoothstep(u_material.y + 0.12, u_material.y + 0.04, n.y) * (1.0 - rock) * step(float(lower), 1.5);
+        float rock = rockWeight(n.y, u_material.y);
+        float dirt = dirtWeight(n.y, u_material.y, rock, bands);
+        // Beyond the grass blades' reach the grass layer takes their colour, so the meadow
+        // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
+        float far_grass = grassWeight(bands, rock, dirt) * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
         if (dirt > 0.0) {
             vec4 da;
             vec3 dd;
@@ -229,6 +234,8 @@ void main() {
         vec3 bitangent = safeNormalize(vec3(0.0, -n.z, n.y));
         vec3 nd = safeNormalize(tangent * detail.x + bitangent * detail.y + n * max(detail.z, 0.05));
         vec3 shading_n = safeNormalize(mix(n, nd, fade));
+
+        albedo.rgb = mix(albedo.rgb, u_grass_far.rgb, far_grass);
 
         Surface surface;
         surface.albedo = albedo.rgb * (1.0 - wire);
