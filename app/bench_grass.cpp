@@ -13,17 +13,6 @@
 namespace vista {
 namespace {
 
-int fail(int code, const std::string& message) {
-    std::fprintf(stderr, "vista: %s\n", message.c_str());
-    return code;
-}
-
-double passMs(const FrameTiming& t, const std::string& name) {
-    for (const auto& p : t.passes)
-        if (p.name == name) return p.gpu_ms;
-    return 0.0;
-}
-
 }  // namespace
 
 int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
@@ -90,11 +79,7 @@ int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
                           {"radius_m", s.grass.radius_m},
                           {"reference_copy_ms", copy_ms},
                           {"rows", rows}};
-    if (!o.json.empty()) {
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
-        if (!problem.empty()) return fail(1, problem);
-    }
-    return 0;
+    return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 
 }  // namespace vista

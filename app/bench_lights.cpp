@@ -18,11 +18,6 @@
 namespace vista {
 namespace {
 
-int fail(int code, const std::string& message) {
-    std::fprintf(stderr, "vista: %s\n", message.c_str());
-    return code;
-}
-
 const char* methodName(LightCulling m) {
     switch (m) {
         case LightCulling::Naive: return "naive";

@@ -5,6 +5,7 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
+#include "renderer/half.h"
 #include "terrain/terrain.h"
 
 #include <nlohmann/json.hpp>
@@ -16,12 +17,6 @@
 
 namespace vista {
 namespace {
-
-float halfToFloat(std::uint16_t h) {
-    int e = (h >> 10) & 31, m = h & 1023;
-    float v = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m + 1024), e - 25);
-    return h & 0x8000 ? -v : v;
-}
 
 // The sun's visibility per pixel, and which pixels show terrain (HDR alpha > 0).
 struct Term {
@@ -229,14 +224,7 @@ int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
         out["frame_cost"] = costs;
     }
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    if (!o.json.empty()) {
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
-        if (!problem.empty()) {
-            std::fprintf(stderr, "vista: %s\n", problem.c_str());
-            return 1;
-        }
-    }
-    return 0;
+    return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 
 }  // namespace vista

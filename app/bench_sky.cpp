@@ -55,12 +55,6 @@ constexpr View kViews[] = {
     {"twilight", -6.0f, 2.0, 180.0, 10.0},
 };
 
-double passMs(const FrameTiming& t, const std::string& name) {
-    for (const auto& p : t.passes)
-        if (p.name == name) return p.gpu_ms;
-    return 0.0;
-}
-
 }  // namespace
 
 int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
@@ -174,14 +168,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
         {"presets", presets},
     };
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    if (!o.json.empty()) {
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
-        if (!problem.empty()) {
-            std::fprintf(stderr, "vista: %s\n", problem.c_str());
-            return 1;
-        }
-    }
-    return 0;
+    return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 
 }  // namespace vista

@@ -16,11 +16,6 @@
 namespace vista {
 namespace {
 
-int fail(int code, const std::string& message) {
-    std::fprintf(stderr, "vista: %s\n", message.c_str());
-    return code;
-}
-
 // Camera poses over the inner part of the map, 10..600 m above the ground, looking ahead
 // and down: what a fly-through sees. Deterministic for a seed.
 std::vector<ViewParams> randomPoses(const Terrain& terrain, const TerrainSettings& s, int count, std::uint32_t seed,
@@ -166,11 +161,7 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
         std::string value = it.value().dump();
         std::printf("%-32s %s\n", it.key().c_str(), value.c_str());
     }
-    if (!o.json.empty()) {
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
-        if (!problem.empty()) return fail(1, problem);
-    }
-    return 0;
+    return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 
 }  // namespace vista

@@ -36,11 +36,6 @@ std::string checkWritableDir(const std::filesystem::path& dir) {
     return {};
 }
 
-int fail(int code, const std::string& message) {
-    std::fprintf(stderr, "vista: %s\n", message.c_str());
-    return code;
-}
-
 }  // namespace
 
 CaptureResult runCapture(const CaptureJob& job) {

@@ -118,6 +118,23 @@ std::string RunStats::table() const {
     return out;
 }
 
+int fail(int code, const std::string& message) {
+    std::fprintf(stderr, "vista: %s\n", message.c_str());
+    return code;
+}
+
+int writeBenchJson(const std::filesystem::path& file, const std::string& text) {
+    if (file.empty()) return 0;
+    std::string problem = writeFileAtomic(file, text);
+    return problem.empty() ? 0 : fail(1, problem);
+}
+
+double passMs(const FrameTiming& t, const std::string& name) {
+    for (const auto& p : t.passes)
+        if (p.name == name) return p.gpu_ms;
+    return 0.0;
+}
+
 std::string writeFileAtomic(const std::filesystem::path& file, const std::string& text) {
     std::filesystem::path tmp = file;
     tmp += ".part";

@@ -60,4 +60,11 @@ double median(std::vector<double> values);
 // Writes text to file through a temporary name and a rename. "" on success, else why.
 std::string writeFileAtomic(const std::filesystem::path& file, const std::string& text);
 
+// Prints "vista: message" to stderr and returns code (the command's exit code).
+int fail(int code, const std::string& message);
+// A bench's --json output: writes text to file unless file is empty; 0, or 1 after saying why.
+int writeBenchJson(const std::filesystem::path& file, const std::string& text);
+// GPU ms of the pass called name in a frame's timings (0 when it did not run).
+double passMs(const FrameTiming& t, const std::string& name);
+
 }  // namespace vista

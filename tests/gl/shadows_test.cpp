@@ -4,6 +4,7 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "gl_fixture.h"
+#include "renderer/half.h"
 #include "terrain/heightmap.h"
 
 #include <glm/trigonometric.hpp>
@@ -19,12 +20,6 @@ FrameRenderer& renderer() {
     test::glContext();
     static FrameRenderer r(vistaRoot());
     return r;
-}
-
-float halfToFloat(std::uint16_t h) {
-    int e = (h >> 10) & 31, m = h & 1023;
-    float v = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m + 1024), e - 25);
-    return h & 0x8000 ? -v : v;
 }
 
 // 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in [-4, 4] m).

@@ -5,6 +5,7 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "gl_fixture.h"
+#include "renderer/half.h"
 #include "terrain/heightmap.h"
 
 #include <OpenImageIO/imageio.h>
@@ -64,12 +65,6 @@ FrameRenderer& renderer() {
     }();
     (void)compiled;
     return r;
-}
-
-float halfToFloat(std::uint16_t h) {
-    int e = (h >> 10) & 31, m = h & 1023;
-    float v = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m + 1024), e - 25);
-    return h & 0x8000 ? -v : v;
 }
 
 ViewParams lookingDown(double height, double fov) {
