@@ -166,3 +166,25 @@ TEST_CASE("shadows GL: the debug views (cascade colours, shadow map) and grazing
     CHECK(has(report.executed, "shadows.cascade"));
     CHECK_FALSE(has(report.executed, "lighting.sun"));  // the final image is not needed
 }
+
+TEST_CASE("shadows GL: frozen cascades stay where they were while the camera moves") {
+    Settings s = pillarScene();
+    s.shadows.freeze = true;
+    render(s, kAbove);
+    REQUIRE(renderer().sunShadows() != nullptr);
+    const std::vector<ShadowCascade> before = renderer().sunShadows()->cascades();
+    ViewParams moved = kAbove;
+    moved.position += glm::dvec3(30.0, 10.0, -20.0);
+    moved.yaw_deg += 40.0;
+    Frame f = render(s, moved);
+    CHECK(f.nonfinite == 0);
+    const std::vector<ShadowCascade>& after = renderer().sunShadows()->cascades();
+    REQUIRE(after.size() == before.size());
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        CHECK(after[i].center_world == before[i].center_world);
+        CHECK(after[i].radius_m == before[i].radius_m);
+    }
+    s.shadows.freeze = false;  // thawed: the cascades follow the camera again
+    render(s, moved);
+    CHECK(renderer().sunShadows()->cascades()[0].center_world != before[0].center_world);
+}
