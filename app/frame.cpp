@@ -240,7 +240,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
-    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s);
+    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth);
     if (s.debug.view != DebugView::Final) display = addDebugViewPass(graph, rc, s.debug, scene);
 
     if (request.capture_hdr || request.capture_ldr)

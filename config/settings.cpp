@@ -146,7 +146,7 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 5> effects{"bloom", "exposure", "tonemap", "fxaa", "grade"};
+    static constexpr std::array<const char*, 6> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -216,6 +216,22 @@ void describe(SettingsVisitor& v, SsaoSettings& s) {
     v.field({"blur_depth_tolerance", "", "relative depth difference at which blur weights fall by e"}, s.blur_depth_tolerance, 0.001f, 1.0f);
 }
 
+void describe(SettingsVisitor& v, DofSettings& s) {
+    v.section("postfx.dof", "depth of field: thin-lens circle of confusion, autofocus, near/far gather");
+    v.field({"enabled", "", "blur what is out of focus (needs the scene depth)"}, s.enabled);
+    v.field({"focus_distance_m", "m", "focus distance when autofocus is off"}, s.focus_distance_m, 0.1f, 1.0e6f);
+    v.field({"focal_length_mm", "mm", "lens focal length"}, s.focal_length_mm, 1.0f, 2000.0f);
+    v.field({"f_stop", "", "f-number N: aperture diameter = focal length / N"}, s.f_stop, 0.5f, 64.0f);
+    v.field({"sensor_height_mm", "mm", "sensor height: CoC in pixels = CoC on the sensor / sensor height * image height"},
+            s.sensor_height_mm, 1.0f, 100.0f);
+    v.field({"autofocus", "", "focus on the screen centre (median of 5 depth samples)"}, s.autofocus);
+    v.field({"autofocus_rate", "1/s", "autofocus speed: the gap (in diopters) falls by e in 1/rate s"}, s.autofocus_rate,
+            0.01f, 100.0f);
+    v.field({"max_coc_px", "px", "largest blur radius"}, s.max_coc_px, 1.0f, 64.0f);
+    v.field({"samples", "", "gather taps per pixel (quality knob)"}, s.samples, 4, 256);
+    v.field({"debug", "", "show the circle of confusion: red far, green near, blue in focus"}, s.debug);
+}
+
 }  // namespace
 
 bool isValidListName(std::string_view name) {
@@ -239,6 +255,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.fxaa);
     describe(v, s.grade);
     describe(v, s.ssao);
+    describe(v, s.dof);
 }
 
 }  // namespace vista

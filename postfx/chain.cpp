@@ -10,7 +10,8 @@
 
 namespace vista {
 
-TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s) {
+TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+                                   TextureHandle depth) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
     const bool reset = !has_time_ || dt < 0.0;
     last_time_s_ = rc.time_s;
@@ -19,7 +20,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded
     ExposureInput exposure;
-    bool uses_auto = false;
+    bool uses_auto = false, uses_dof = false;
+    TextureHandle debug_view;  // an effect's debug view replaces the display (later effects are culled)
     auto flush = [&] {
         if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
         exposure = {};
@@ -54,6 +56,14 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 flush();
                 image = addGradePass(graph, rc, image, s.grade);
                 break;
+            case PostEffect::Dof:
+                if (!s.dof.enabled || !depth.valid()) break;
+                flush();
+                if (!dof_) dof_ = std::make_unique<DepthOfField>();
+                image = dof_->addPasses(graph, rc, image, depth, s.dof, dt, reset);
+                uses_dof = true;
+                if (s.dof.debug) debug_view = image;
+                break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
                 flush();
@@ -62,6 +72,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
         }
     }
     if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
+    if (!uses_dof) dof_.reset();
+    if (debug_view.valid()) return debug_view;
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
     return image;
@@ -70,7 +82,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
     for (auto list :
-         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms()})
+         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "config/settings.h"
+#include "postfx/dof.h"
 #include "postfx/exposure.h"
 #include "renderer/render_context.h"
 
@@ -21,12 +22,18 @@ public:
     // Adds the chain's passes for hdr; returns the display image. rc.time_s drives the
     // exposure adaptation: its change since the last call is the frame time (the first call,
     // or time going backwards, takes the metered exposure at once).
-    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s);
+    // depth: the scene's depth (reversed-Z) for the effects that need it (depth of field);
+    // without one those effects add no pass.
+    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+                            TextureHandle depth = {});
     // Auto exposure's state, while auto exposure is in use (null otherwise).
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
+    // Depth of field's autofocus state, while depth of field is in use (null otherwise).
+    const DepthOfField* dof() const { return dof_.get(); }
 
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
+    std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
     double last_time_s_ = 0.0;
     bool has_time_ = false;
 };

@@ -5,6 +5,7 @@
 #include "app/scene.h"
 #include "postfx/bloom.h"
 #include "postfx/chain.h"
+#include "postfx/dof.h"
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
 #include "postfx/ssao.h"
@@ -515,4 +516,210 @@ TEST_CASE("gl: grading is neutral at its defaults, lifts, gains, desaturates and
     CHECK(pixel(out, w, 0, 0) < 0.05f);                                         // the corner nearly black
     CHECK(pixel(out, w, 0, 0) == doctest::Approx(pixel(out, w, w - 1, h - 1)).epsilon(1e-4));
     CHECK(allFinite(out));
+}
+
+namespace {
+
+// A reversed-Z depth image (near 0.1 m, infinite far) from distances in metres (inf: sky).
+std::vector<float> depthFromDistances(const std::vector<float>& distances, float near_m = 0.1f) {
+    std::vector<float> d;
+    for (float s : distances) d.push_back(std::isinf(s) ? 0.0f : near_m / s);
+    return d;
+}
+
+// Runs add(graph, rc, image, depth) on an RGBA32F image and a Depth32F depth (rows bottom first).
+template <class AddPasses>
+std::vector<float> runWithDepth(Bench& bench, const std::vector<float>& rgba, const std::vector<float>& depth, int w,
+                                int h, double time_s, AddPasses&& add) {
+    gl::Texture d = gl::Texture::create2D(w, h, GL_DEPTH_COMPONENT32F, 1, "test depth");
+    glTextureSubImage2D(d.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    return bench.run(rgba, w, h, time_s, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+        TextureHandle dh = g.importTexture("depth", {w, h, PixelFormat::Depth32F}, d.id());
+        return add(g, rc, in, dh);
+    });
+}
+
+Settings dofOnly() {
+    Settings s;
+    s.postfx.order = {PostEffect::Dof};
+    s.dof.enabled = true;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("gl: depth of field's circle of confusion matches the thin-lens closed form") {
+    test::glContext();
+    const int w = 64, h = 36;
+    DofSettings s;
+    s.enabled = true;
+    s.autofocus = false;
+    s.focus_distance_m = 8.0f;
+    s.focal_length_mm = 85.0f;
+    s.f_stop = 1.8f;
+    s.max_coc_px = 4.0f;
+    std::vector<float> distances;
+    for (int i = 0; i < w * h; ++i) distances.push_back(i == 0 ? INFINITY : 0.5f * std::pow(1.01f, float(i % 700)));
+    Bench bench;
+    const std::vector<float> out = runWithDepth(bench, uniform(w, h, 0.3f), depthFromDistances(distances), w, h, 0.0,
+        [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle depth) {
+            return addDofCocPass(g, rc, in, depth, s, {});
+        });
+    REQUIRE(allFinite(out));
+    int clamped = 0, checked = 0;
+    for (int i = 0; i < w * h; ++i) {
+        // The distance the shader sees: the stored float depth turned back into metres.
+        const double stored = double(depthFromDistances({distances[std::size_t(i)]})[0]);
+        const double distance = stored > 0.0 ? 0.1 / stored : INFINITY;
+        const double expected = std::clamp(dofCocRadiusPx(distance, 8.0, s, h), -4.0, 4.0);
+        const float got = out[std::size_t(i) * 4 + 3];
+        INFO("distance " << distance << " m");
+        CHECK(got == doctest::Approx(expected).epsilon(2e-3).scale(1.0));  // half float: 11 bits
+        if (std::abs(expected) >= 4.0) ++clamped;
+        ++checked;
+        CHECK(out[std::size_t(i) * 4] == doctest::Approx(0.3f).epsilon(1e-3));
+    }
+    CHECK(clamped > 0);
+    CHECK(clamped < checked);
+    // The sky: f^2 / (N (S1 - f)) on the sensor, times height / sensor, halved.
+    const double f = 0.085, sky = 0.5 * f * f / (1.8 * (8.0 - f)) / 0.024 * h;
+    CHECK(out[3] == doctest::Approx(sky).epsilon(2e-3));
+}
+
+TEST_CASE("gl: autofocus moves smoothly at its rate, independent of the frame rate, and converges") {
+    test::glContext();
+    const int w = 48, h = 32;
+    Settings s = dofOnly();
+    s.dof.autofocus_rate = 2.0f;
+    const auto scene = [&](float centre_m) {
+        std::vector<float> d(std::size_t(w * h), 200.0f);
+        for (int y = h / 2 - 4; y <= h / 2 + 4; ++y)
+            for (int x = w / 2 - 4; x <= w / 2 + 4; ++x) d[std::size_t(y * w + x)] = centre_m;
+        return depthFromDistances(d);
+    };
+    const std::vector<float> image = uniform(w, h, 0.5f);
+    const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
+        runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
+            return bench.chain.addPasses(g, rc, in, s, dh);
+        });
+        REQUIRE(bench.chain.dof());
+        return bench.chain.dof()->read();
+    };
+    Bench fine, coarse;
+    postfx::DofFocusState st = frame(fine, scene(2.0f), 0.0);
+    CHECK(st.diopters == doctest::Approx(0.5f).epsilon(1e-4));  // the first frame takes it at once
+    CHECK(postfxPasses(fine.executed) ==
+          std::vector<std::string>{"postfx.dof.focus", "postfx.dof.coc", "postfx.dof.tiles", "postfx.dof.dilate",
+                                   "postfx.dof.gather", "postfx.encode"});
+    frame(coarse, scene(2.0f), 0.0);
+    // Focus pulls from 2 m to 20 m: 0.5 -> 0.05 diopters, in 30 frames of 1/30 s.
+    const std::vector<float> far = scene(20.0f);
+    const double dt = 1.0 / 30.0;
+    float previous = st.diopters;
+    for (int i = 1; i <= 30; ++i) {
+        st = frame(fine, far, i * dt);
+        const float gap = previous - 0.05f;
+        const float step = previous - st.diopters;
+        CHECK(step > 0.0f);                                         // moves towards the target, never past it
+        CHECK(step <= gap * s.dof.autofocus_rate * dt * 1.0001 + 1e-6);  // no step larger than rate * dt allows
+        CHECK(st.target == doctest::Approx(0.05f).epsilon(1e-4));
+        previous = st.diopters;
+    }
+    // After 1 s the gap has fallen by e^-2, whatever the frame rate.
+    CHECK(st.diopters - 0.05f == doctest::Approx(0.45 * std::exp(-2.0)).epsilon(1e-3));
+    const postfx::DofFocusState one = frame(coarse, far, 1.0);
+    CHECK(one.diopters == doctest::Approx(st.diopters).epsilon(1e-4));
+    for (int i = 31; i <= 150; ++i) st = frame(fine, far, i * dt);
+    CHECK(st.diopters == doctest::Approx(0.05f).epsilon(1e-3));  // converged after 5 s
+
+    // One odd sample of the five (a NaN, or a near object at a side sample) does not move it.
+    std::vector<float> odd = far;
+    odd[std::size_t((h / 2) * w + w / 2)] = std::numeric_limits<float>::quiet_NaN();
+    CHECK(frame(fine, odd, 6.0).target == doctest::Approx(0.05f).epsilon(1e-4));
+    s.dof.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK(off.chain.dof() == nullptr);
+    CHECK_FALSE(has(off.executed, "postfx.dof"));
+}
+
+TEST_CASE("gl: depth of field: sharp where in focus, the foreground bleeds over a sharp background, the background does not, NaN stays local") {
+    test::glContext();
+    const int w = 96, h = 48;
+    Settings s = dofOnly();
+    s.dof.autofocus = false;
+    s.dof.focus_distance_m = 10.0f;
+    s.dof.f_stop = 1.4f;
+    s.dof.focal_length_mm = 300.0f;  // the sky's radius: 6.6 px
+    s.dof.max_coc_px = 8.0f;
+    s.postfx.order = {PostEffect::Dof};
+    std::vector<float> image(std::size_t(w * h * 4), 1.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) setPixel(image, w, x, y, float((x * 7 + y * 3) % 11) / 10.0f);  // texture
+    const auto run = [&](const std::vector<float>& rgba, const std::vector<float>& distances) {
+        Bench bench;
+        return runWithDepth(bench, rgba, depthFromDistances(distances), w, h, 0.0,
+            [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
+                s.postfx.order = {PostEffect::Dof};
+                return bench.chain.addPasses(g, rc, in, s, dh);
+            });
+    };
+    std::vector<float> focused(std::size_t(w * h), 10.0f);
+    std::vector<float> out = run(image, focused);
+    // In focus: the encode of the input (same texture, sRGB), nothing moved.
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < out.size(); ++i) largest = std::max(largest, std::abs(out[i] - reference[i]));
+    CHECK(largest <= 1.0f / 255.0f);
+
+    // Left half near (0.5 m, white), right half in focus (black): the white bleeds into the black.
+    std::vector<float> split(image.size(), 0.0f), distances(std::size_t(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            setPixel(split, w, x, y, x < w / 2 ? 1.0f : 0.0f);
+            split[(std::size_t(y * w + x)) * 4 + 3] = 1.0f;
+            distances[std::size_t(y * w + x)] = x < w / 2 ? 0.5f : 10.0f;
+        }
+    out = run(split, distances);
+    REQUIRE(allFinite(out));
+    CHECK(pixel(out, w, w / 2 + 1, h / 2) > 0.2f);   // the blurred foreground edge covers the background
+    CHECK(pixel(out, w, w / 2 + 4, h / 2) > 0.0f);
+    CHECK(pixel(out, w, w / 2 + 10, h / 2) == 0.0f);  // beyond max_coc_px: untouched
+    CHECK(pixel(out, w, w / 2 - 1, h / 2) < 1.0f);    // and the foreground's own edge softens
+
+    // Left half in focus (black), right half far (1 km, white): the blurred background stays
+    // behind the sharp object.
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            setPixel(split, w, x, y, x < w / 2 ? 0.0f : 1.0f);
+            distances[std::size_t(y * w + x)] = x < w / 2 ? 10.0f : 1000.0f;
+        }
+    out = run(split, distances);
+    for (int x = 0; x < w / 2; ++x) CHECK(pixel(out, w, x, h / 2) == 0.0f);
+    CHECK(pixel(out, w, w / 2, h / 2) > 0.9f);
+
+    // Everything blurred (the sky at infinity), one NaN, one Inf and one 1e30 pixel: finite,
+    // and nothing changes beyond max_coc_px + 1 of them.
+    std::vector<float> sky(std::size_t(w * h), INFINITY);
+    const std::vector<float> clean = run(image, sky);
+    std::vector<float> dirty = image;
+    setPixel(dirty, w, 20, 20, std::numeric_limits<float>::quiet_NaN());
+    setPixel(dirty, w, 50, 20, std::numeric_limits<float>::infinity());
+    setPixel(dirty, w, 80, 30, 1e30f);
+    out = run(dirty, sky);
+    REQUIRE(allFinite(out));
+    int changed_far = 0, changed_near = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float d = std::min({std::hypot(float(x - 20), float(y - 20)), std::hypot(float(x - 50), float(y - 20)),
+                                      std::hypot(float(x - 80), float(y - 30))});
+            const bool differs = std::abs(pixel(out, w, x, y) - pixel(clean, w, x, y)) > 0.0f;
+            if (d > s.dof.max_coc_px + 1.5f) changed_far += differs;
+            else changed_near += differs;
+        }
+    CHECK(changed_far == 0);
+    CHECK(changed_near > 0);
 }
