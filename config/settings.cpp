@@ -146,7 +146,8 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 6> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof"};
+    static constexpr std::array<const char*, 7> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
+                                                        "motion_blur"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -232,6 +233,17 @@ void describe(SettingsVisitor& v, DofSettings& s) {
     v.field({"debug", "", "show the circle of confusion: red far, green near, blue in focus"}, s.debug);
 }
 
+void describe(SettingsVisitor& v, MotionBlurSettings& s) {
+    v.section("postfx.motion_blur", "camera motion blur: depth reprojection, tile/neighbour max, McGuire 2012 gather");
+    v.field({"enabled", "", "blur by the camera's motion (needs the scene depth)"}, s.enabled);
+    v.field({"shutter_deg", "deg", "shutter angle: exposure = shutter / 360 / frame_rate seconds"}, s.shutter_deg, 0.0f, 360.0f);
+    v.field({"frame_rate", "1/s", "film rate the shutter angle refers to (not the render rate)"}, s.frame_rate, 1.0f, 1000.0f);
+    v.field({"max_blur_px", "px", "longest blur, half on each side of a pixel; also the tile size"}, s.max_blur_px, 2.0f, 64.0f);
+    v.field({"samples", "", "gather taps per pixel (quality knob)"}, s.samples, 2, 64);
+    v.field({"depth_extent", "", "relative depth difference over which foreground and background blend"},
+            s.depth_extent, 0.001f, 1.0f);
+}
+
 }  // namespace
 
 bool isValidListName(std::string_view name) {
@@ -256,6 +268,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.grade);
     describe(v, s.ssao);
     describe(v, s.dof);
+    describe(v, s.motion_blur);
 }
 
 }  // namespace vista

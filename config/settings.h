@@ -158,15 +158,15 @@ struct SkySettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
     //! Effects in the order they run on the image. Effects before `tonemap` see linear HDR,
     //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
     //! chain still ends with a clamp and the sRGB encoding.
-    std::vector<PostEffect> order{PostEffect::Dof,   PostEffect::Bloom, PostEffect::Exposure, PostEffect::Tonemap,
-                                  PostEffect::Grade, PostEffect::Fxaa};
+    std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,   PostEffect::Bloom, PostEffect::Exposure,
+                                  PostEffect::Tonemap,    PostEffect::Grade, PostEffect::Fxaa};
 };
 
 enum class ExposureMode : int { Manual, Auto };
@@ -253,6 +253,19 @@ struct DofSettings {
     bool debug = false;              //!< the CoC replaces the final image: red far, green near, blue in focus
 };
 
+//! Camera motion blur after McGuire et al. 2012: per-pixel velocity from depth reprojected with
+//! the previous frame's camera, tile max and neighbour max velocity, and a gather with depth
+//! comparisons. The blur covers the motion during the exposure shutter_deg / 360 / frame_rate
+//! seconds, whatever the rate frames are rendered at.
+struct MotionBlurSettings {
+    bool enabled = false;
+    float shutter_deg = 180.0f;   //!< deg, shutter angle: exposure = shutter / 360 of a frame at frame_rate, 0..360
+    float frame_rate = 30.0f;     //!< 1/s, the film rate the shutter angle refers to, 1..1000
+    float max_blur_px = 20.0f;    //!< px, longest blur (half each side; also the tile size), 2..64
+    int samples = 12;             //!< gather taps per pixel, 2..64
+    float depth_extent = 0.02f;   //!< relative depth difference over which foreground/background blend, 0.001..1
+};
+
 struct Settings {
     WindowSettings window;
     CameraSettings camera;
@@ -269,6 +282,7 @@ struct Settings {
     GradeSettings grade;        // [postfx.grade]
     SsaoSettings ssao;          // [postfx.ssao]
     DofSettings dof;            // [postfx.dof]
+    MotionBlurSettings motion_blur;  // [postfx.motion_blur]
 };
 
 // Lists every section and field of s to v, in file order.

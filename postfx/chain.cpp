@@ -20,7 +20,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded
     ExposureInput exposure;
-    bool uses_auto = false, uses_dof = false;
+    bool uses_auto = false, uses_dof = false, uses_motion_blur = false;
     TextureHandle debug_view;  // an effect's debug view replaces the display (later effects are culled)
     auto flush = [&] {
         if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
@@ -64,6 +64,13 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 uses_dof = true;
                 if (s.dof.debug) debug_view = image;
                 break;
+            case PostEffect::MotionBlur:
+                if (!s.motion_blur.enabled || !depth.valid()) break;
+                flush();
+                if (!motion_blur_) motion_blur_ = std::make_unique<MotionBlur>();
+                image = motion_blur_->addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
+                uses_motion_blur = true;
+                break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
                 flush();
@@ -73,6 +80,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     }
     if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
     if (!uses_dof) dof_.reset();
+    if (!uses_motion_blur) motion_blur_.reset();
     if (debug_view.valid()) return debug_view;
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
@@ -82,7 +90,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
     for (auto list :
-         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms()})
+         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
+          motionBlurPrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

@@ -8,6 +8,7 @@
 #include "config/settings.h"
 #include "postfx/dof.h"
 #include "postfx/exposure.h"
+#include "postfx/motion_blur.h"
 #include "renderer/render_context.h"
 
 #include <memory>
@@ -34,6 +35,7 @@ public:
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
     std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
+    std::unique_ptr<MotionBlur> motion_blur_;      // the previous frame's camera
     double last_time_s_ = 0.0;
     bool has_time_ = false;
 };

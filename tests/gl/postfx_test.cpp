@@ -7,6 +7,7 @@
 #include "postfx/chain.h"
 #include "postfx/dof.h"
 #include "postfx/fxaa.h"
+#include "postfx/motion_blur.h"
 #include "postfx/grade.h"
 #include "postfx/ssao.h"
 #include "gl_fixture.h"
@@ -28,12 +29,13 @@ struct Bench {
     gl::VertexArray vao = gl::createVertexArray("postfx test");
     PostChain chain;
     std::vector<std::string> executed;
+    ViewParams camera;  // the view the passes see (its size is the image's)
 
     template <class AddPasses>
     std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add) {
         gl::Texture input = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "postfx test input");
         glTextureSubImage2D(input.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-        ViewParams view;
+        ViewParams view = camera;
         view.width = w, view.height = h;
         RenderContext rc{shaders, device, vao.id(), view, ViewMatrices{}, 0, time_s};
         FrameGraph graph;
@@ -722,4 +724,103 @@ TEST_CASE("gl: depth of field: sharp where in focus, the foreground bleeds over 
         }
     CHECK(changed_far == 0);
     CHECK(changed_near > 0);
+}
+
+TEST_CASE("gl: motion blur reprojection: camera-relative in double, exact far from the origin") {
+    ViewParams a{{1.0e7, 50.0, -3.0e6}, 30.0, -5.0, 60.0, 0.1, 64, 36};
+    ViewParams b = a;
+    b.position.x += 0.25;  // a quarter metre, 10,000 km from the origin
+    const glm::dmat4 m = reprojectionMatrix(a, b);
+    // A point 10 m ahead of b on its axis: in a's clip space it sits 0.25 m to the left.
+    const ViewMatrices vb = viewMatrices(b);
+    const glm::dvec3 p = 10.0 * vb.forward;  // camera-relative to b
+    const glm::dvec4 clip_b = glm::dmat4(vb.view_proj) * glm::dvec4(p, 1.0);
+    const glm::dvec4 ndc_b = clip_b / clip_b.w;
+    const glm::dvec4 prev = m * glm::dvec4(ndc_b.x, ndc_b.y, ndc_b.z, 1.0);
+    const glm::dvec4 expect = glm::dmat4(viewMatrices(a).view_proj) * glm::dvec4(p + glm::dvec3(0.25, 0.0, 0.0), 1.0);
+    CHECK(prev.x / prev.w == doctest::Approx(expect.x / expect.w).epsilon(1e-5));
+    CHECK(prev.y / prev.w == doctest::Approx(expect.y / expect.w).epsilon(1e-5));
+    CHECK(std::abs(prev.x / prev.w - ndc_b.x) > 0.01);  // it did move
+    const glm::dmat4 still = reprojectionMatrix(a, a);
+    const glm::dvec4 same = still * glm::dvec4(0.3, -0.2, 0.01, 1.0);
+    CHECK(same.x / same.w == doctest::Approx(0.3).epsilon(1e-6));
+    CHECK(same.y / same.w == doctest::Approx(-0.2).epsilon(1e-6));
+}
+
+TEST_CASE("gl: motion blur: a still camera leaves the image, a moving one blurs along the motion, a NaN stays local") {
+    test::glContext();
+    const int w = 96, h = 48;
+    Settings s;
+    s.postfx.order = {PostEffect::MotionBlur};
+    s.motion_blur.enabled = true;
+    s.motion_blur.max_blur_px = 16.0f;
+    const std::vector<float> plane(std::size_t(w * h), 0.1f / 20.0f);  // a wall 20 m ahead
+    std::vector<float> image = uniform(w, h, 0.0f);
+    setPixel(image, w, 48, 24, 1.0f);
+    const auto frames = [&](const std::vector<float>& rgba, double dx_m, double dt) {
+        Bench bench;
+        bench.camera = ViewParams{{1.0e6, 10.0, 0.0}, 0.0, 0.0, 60.0, 0.1, w, h};
+        const auto add = [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
+            return bench.chain.addPasses(g, rc, in, s, d);
+        };
+        runWithDepth(bench, rgba, plane, w, h, 0.0, add);
+        CHECK_FALSE(has(bench.executed, "postfx.motion_blur"));  // no previous frame
+        bench.camera.position.x += dx_m;
+        std::vector<float> out = runWithDepth(bench, rgba, plane, w, h, dt, add);
+        return std::make_pair(out, postfxPasses(bench.executed));
+    };
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+
+    auto [still, still_passes] = frames(image, 0.0, 1.0 / 30.0);
+    CHECK(still_passes == std::vector<std::string>{"postfx.encode"});  // nothing moved: no pass
+    CHECK(still == reference);
+
+    // 8 m to the right in 1/30 s: a point 20 m ahead moves 8 / 20 * 24 / tan(30 deg) = 16.6 px;
+    // at 180 deg and 30 fps half a frame is exposed: an 8.3 px streak, 4.2 px each side.
+    auto [moved, moved_passes] = frames(image, 8.0, 1.0 / 30.0);
+    CHECK(moved_passes == std::vector<std::string>{"postfx.motion_blur.velocity", "postfx.motion_blur.tiles",
+                                                   "postfx.motion_blur.neighbors", "postfx.motion_blur.gather",
+                                                   "postfx.encode"});
+    REQUIRE(allFinite(moved));
+    CHECK(pixel(moved, w, 48, 24) < pixel(reference, w, 48, 24));  // the dot's energy spread out
+    CHECK(pixel(moved, w, 51, 24) > 0.0f);                            // along x
+    CHECK(pixel(moved, w, 45, 24) > 0.0f);
+    CHECK(pixel(moved, w, 54, 24) == 0.0f);                           // no further than the blur
+    for (int dy : {-3, -2, -1, 1, 2, 3}) CHECK(pixel(moved, w, 48, 24 + dy) == 0.0f);  // not across it
+
+    // The same motion at twice the frame rate (half the displacement in half the time) blurs
+    // as far: the blur length does not depend on the render rate.
+    auto [fast, fast_passes] = frames(image, 4.0, 1.0 / 60.0);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < fast.size(); ++i) largest = std::max(largest, std::abs(fast[i] - moved[i]));
+    CHECK(largest <= 2.0f / 255.0f);
+
+    // NaN, Inf and 1e30 pixels: finite, nothing changes beyond the blur (4.2 px, k = 8 px) around them.
+    std::vector<float> textured = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) setPixel(textured, w, x, y, float((x * 7 + y * 3) % 11) / 10.0f);
+    const std::vector<float> clean = frames(textured, 8.0, 1.0 / 30.0).first;
+    std::vector<float> dirty = textured;
+    setPixel(dirty, w, 20, 20, std::numeric_limits<float>::quiet_NaN());
+    setPixel(dirty, w, 50, 10, std::numeric_limits<float>::infinity());
+    setPixel(dirty, w, 80, 30, 1e30f);
+    const std::vector<float> out = frames(dirty, 8.0, 1.0 / 30.0).first;
+    REQUIRE(allFinite(out));
+    int changed_far = 0, changed_near = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const bool near = (std::abs(y - 20) <= 1 && std::abs(x - 20) <= 9) || (std::abs(y - 10) <= 1 && std::abs(x - 50) <= 9) ||
+                              (std::abs(y - 30) <= 1 && std::abs(x - 80) <= 9);
+            const bool differs = pixel(out, w, x, y) != pixel(clean, w, x, y);
+            (near ? changed_near : changed_far) += differs;
+        }
+    CHECK(changed_far == 0);
+    CHECK(changed_near > 0);
+
+    s.motion_blur.enabled = false;
+    auto [off, off_passes] = frames(image, 8.0, 1.0 / 30.0);
+    CHECK(off_passes == std::vector<std::string>{"postfx.encode"});
 }
