@@ -158,15 +158,16 @@ struct SkySettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
     //! Effects in the order they run on the image. Effects before `tonemap` see linear HDR,
     //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
     //! chain still ends with a clamp and the sRGB encoding.
-    std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,   PostEffect::Bloom, PostEffect::Exposure,
-                                  PostEffect::Tonemap,    PostEffect::Grade, PostEffect::Fxaa};
+    std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,      PostEffect::Bloom,
+                                  PostEffect::LensFlare,  PostEffect::Exposure, PostEffect::Tonemap,
+                                  PostEffect::Grade,      PostEffect::Fxaa};
 };
 
 enum class ExposureMode : int { Manual, Auto };
@@ -266,6 +267,21 @@ struct MotionBlurSettings {
     float depth_extent = 0.02f;   //!< relative depth difference over which foreground/background blend, 0.001..1
 };
 
+//! Lens flare from the sun (after Chapman 2013's parts, drawn from the sun's screen position):
+//! ghosts along the sun-to-centre axis, a halo, chromatic aberration and a starburst, scaled by
+//! the sun's visibility (the share of depth samples around it that see the sky, smoothed).
+struct LensFlareSettings {
+    bool enabled = false;
+    float intensity = 0.002f;        //!< flare radiance per unit sun illuminance, 0..1
+    int ghosts = 5;                  //!< ghost discs along the axis, 0..16
+    float ghost_spacing = 0.45f;     //!< spacing of the ghosts along the sun-to-centre axis (1 = sun to centre), 0.01..2
+    float halo_radius = 0.45f;       //!< halo ring radius, share of the image height, 0..2
+    float chromatic = 0.03f;         //!< red/blue separation along the axis, 0..0.5
+    float starburst = 1.0f;          //!< strength of the rays around the sun, 0..10
+    float visibility_radius_deg = 0.5f;  //!< deg, radius of the depth samples around the sun, 0.01..10
+    float visibility_rate = 8.0f;    //!< 1/s, visibility follows its target by e in 1/rate s, 0.01..100
+};
+
 struct Settings {
     WindowSettings window;
     CameraSettings camera;
@@ -283,6 +299,7 @@ struct Settings {
     SsaoSettings ssao;          // [postfx.ssao]
     DofSettings dof;            // [postfx.dof]
     MotionBlurSettings motion_blur;  // [postfx.motion_blur]
+    LensFlareSettings lens_flare;    // [postfx.lens_flare]
 };
 
 // Lists every section and field of s to v, in file order.

@@ -5,6 +5,7 @@
 #include "postfx/bloom.h"
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
+#include "sky/atmosphere.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
@@ -20,7 +21,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded
     ExposureInput exposure;
-    bool uses_auto = false, uses_dof = false, uses_motion_blur = false;
+    bool uses_auto = false, uses_dof = false, uses_motion_blur = false, uses_flare = false;
     TextureHandle debug_view;  // an effect's debug view replaces the display (later effects are culled)
     auto flush = [&] {
         if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
@@ -71,6 +72,14 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 image = motion_blur_->addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
                 uses_motion_blur = true;
                 break;
+            case PostEffect::LensFlare:
+                if (!s.lens_flare.enabled || !depth.valid()) break;
+                flush();
+                if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
+                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, sunDirection(s.sky),
+                                               s.sky.sun_illuminance, dt, reset);
+                uses_flare = true;
+                break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
                 flush();
@@ -81,6 +90,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
     if (!uses_dof) dof_.reset();
     if (!uses_motion_blur) motion_blur_.reset();
+    if (!uses_flare) lens_flare_.reset();
     if (debug_view.valid()) return debug_view;
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
@@ -91,7 +101,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
     for (auto list :
          {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
-          motionBlurPrograms()})
+          motionBlurPrograms(), lensFlarePrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

@@ -8,6 +8,7 @@
 #include "config/settings.h"
 #include "postfx/dof.h"
 #include "postfx/exposure.h"
+#include "postfx/lens_flare.h"
 #include "postfx/motion_blur.h"
 #include "renderer/render_context.h"
 
@@ -31,11 +32,14 @@ public:
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
     // Depth of field's autofocus state, while depth of field is in use (null otherwise).
     const DepthOfField* dof() const { return dof_.get(); }
+    // The lens flare's sun visibility, while the lens flare is in use (null otherwise).
+    const LensFlare* lensFlare() const { return lens_flare_.get(); }
 
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
     std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
     std::unique_ptr<MotionBlur> motion_blur_;      // the previous frame's camera
+    std::unique_ptr<LensFlare> lens_flare_;        // the smoothed sun visibility
     double last_time_s_ = 0.0;
     bool has_time_ = false;
 };

@@ -7,6 +7,8 @@
 #include "postfx/chain.h"
 #include "postfx/dof.h"
 #include "postfx/fxaa.h"
+#include "postfx/lens_flare.h"
+#include "sky/atmosphere.h"
 #include "postfx/motion_blur.h"
 #include "postfx/grade.h"
 #include "postfx/ssao.h"
@@ -823,4 +825,89 @@ TEST_CASE("gl: motion blur: a still camera leaves the image, a moving one blurs 
     s.motion_blur.enabled = false;
     auto [off, off_passes] = frames(image, 8.0, 1.0 / 30.0);
     CHECK(off_passes == std::vector<std::string>{"postfx.encode"});
+}
+
+TEST_CASE("gl: lens flare: none for a sun off screen or below the horizon, visibility is the sky share of the samples, smoothed") {
+    test::glContext();
+    const int w = 96, h = 64;
+    Settings s;
+    s.postfx.order = {PostEffect::LensFlare};
+    s.lens_flare.enabled = true;
+    s.lens_flare.visibility_radius_deg = 3.0f;
+    s.lens_flare.intensity = 0.1f;  // 0.3 at the sun over a 0.2 image
+    s.lens_flare.visibility_rate = 8.0f;
+    s.sky.sun_mode = SunMode::Angles;
+    s.sky.sun_azimuth_deg = 0.0f;  // north: straight ahead of a camera with yaw 0
+    s.sky.sun_elevation_deg = 10.0f;
+    const ViewParams camera{{0.0, 10.0, 0.0}, 5.0, 6.0, 60.0, 0.1, w, h};
+    const std::optional<glm::vec2> sun = sunScreenPosition(camera, sunDirection(s.sky));
+    REQUIRE(sun);
+    CHECK(sun->x < 0.5f);  // the camera turned right: the sun is left of the centre, above it
+    CHECK(sun->y > 0.5f);
+    const int cx = int(std::floor(sun->x * w)), cy = int(std::floor(sun->y * h));
+    const std::vector<float> image = uniform(w, h, 0.2f);
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+    const auto depthImage = [&](auto sky) {
+        std::vector<float> d(std::size_t(w * h));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) d[std::size_t(y * w + x)] = sky(x, y) ? 0.0f : 0.01f;
+        return d;
+    };
+    const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
+        bench.camera = camera;
+        return runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
+            return bench.chain.addPasses(g, rc, in, s, d);
+        });
+    };
+    // Samples 1 px and 2.9 px each side of the sun (3 deg at 55.4 px per radian): a sky edge
+    // through the sun leaves half of them in the sky, a corner a quarter.
+    const std::vector<std::pair<std::vector<float>, float>> cases = {
+        {depthImage([](int, int) { return true; }), 1.0f},
+        {depthImage([&](int x, int) { return x < cx; }), 0.5f},
+        {depthImage([&](int x, int y) { return x < cx && y < cy; }), 0.25f},
+        {depthImage([](int, int) { return false; }), 0.0f},
+    };
+    for (const auto& [depth, share] : cases) {
+        Bench bench;
+        std::vector<float> out = frame(bench, depth, 0.0);
+        REQUIRE(bench.chain.lensFlare());
+        CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.lens_flare.visibility", "postfx.lens_flare", "postfx.encode"});
+        const postfx::FlareVisibility v = bench.chain.lensFlare()->read();
+        CHECK(v.target == doctest::Approx(share));
+        CHECK(v.visibility == doctest::Approx(share));  // the first frame takes it at once
+        REQUIRE(allFinite(out));
+        if (share == 0.0f) CHECK(out == reference);  // hidden: nothing added
+        else CHECK(pixel(out, w, cx, cy) > pixel(reference, w, cx, cy) + 0.02f);
+    }
+
+    // The sun sinks behind a ridge: the visibility falls by exp(-rate * dt) per frame, no jump.
+    Bench fading;
+    frame(fading, cases[0].first, 0.0);
+    float previous = 1.0f;
+    for (int i = 1; i <= 10; ++i) {
+        frame(fading, cases[3].first, 0.05 * i);
+        const float v = fading.chain.lensFlare()->read().visibility;
+        CHECK(v == doctest::Approx(previous * std::exp(-8.0f * 0.05f)).epsilon(1e-4));
+        previous = v;
+    }
+
+    // Behind the camera, or below the horizon: no pass, the image unchanged.
+    s.sky.sun_azimuth_deg = 180.0f;
+    Bench behind;
+    CHECK(frame(behind, cases[0].first, 0.0) == reference);
+    CHECK_FALSE(has(behind.executed, "postfx.lens_flare"));
+    s.sky.sun_azimuth_deg = 0.0f;
+    s.sky.sun_elevation_deg = -2.0f;
+    CHECK_FALSE(sunScreenPosition(ViewParams{{0.0, 10.0, 0.0}, 0.0, -2.0, 60.0, 0.1, w, h}, sunDirection(s.sky)));
+    Bench below;
+    below.camera = ViewParams{{0.0, 10.0, 0.0}, 0.0, -2.0, 60.0, 0.1, w, h};
+    CHECK(frame(below, cases[0].first, 0.0) == reference);
+    CHECK_FALSE(has(below.executed, "postfx.lens_flare"));
+    s.lens_flare.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK(off.chain.lensFlare() == nullptr);
 }
