@@ -146,8 +146,8 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 8> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
-                                                        "motion_blur", "lens_flare"};
+    static constexpr std::array<const char*, 9> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
+                                                        "motion_blur", "lens_flare", "night_vision"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -202,6 +202,18 @@ void describe(SettingsVisitor& v, GradeSettings& s) {
     v.field({"saturation", "", "0 grey, 1 unchanged"}, s.saturation, 0.0f, 4.0f);
     v.field({"vignette", "", "darkening at the corners, 0 none, 1 black"}, s.vignette, 0.0f, 1.0f);
     v.field({"vignette_start", "", "share of the centre-to-corner distance where the darkening begins"}, s.vignette_start, 0.0f, 1.0f);
+    v.field({"grain", "", "film grain amplitude at mid-grey (none at black and white)"}, s.grain, 0.0f, 1.0f);
+    v.field({"grain_rate", "1/s", "new grain pattern this many times per second of scene time"}, s.grain_rate, 0.0f, 1000.0f);
+}
+
+void describe(SettingsVisitor& v, NightVisionSettings& s) {
+    v.section("postfx.night_vision", "night vision: amplified luminance, noise, green tint, scope vignette");
+    v.field({"enabled", "", "night vision (place it after tonemap)"}, s.enabled);
+    v.field({"gain", "", "luminance amplification"}, s.gain, 1.0f, 1000.0f);
+    v.field({"noise", "", "noise amplitude"}, s.noise, 0.0f, 1.0f);
+    v.field({"noise_rate", "1/s", "new noise pattern this many times per second of scene time"}, s.noise_rate, 0.0f, 1000.0f);
+    v.field({"vignette", "", "darkening outside the scope circle, 1 black"}, s.vignette, 0.0f, 1.0f);
+    v.field({"tint", "", "phosphor colour"}, s.tint, 0.0f, 1.0f);
 }
 
 void describe(SettingsVisitor& v, SsaoSettings& s) {
@@ -285,6 +297,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.dof);
     describe(v, s.motion_blur);
     describe(v, s.lens_flare);
+    describe(v, s.night_vision);
 }
 
 }  // namespace vista

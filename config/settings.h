@@ -158,7 +158,7 @@ struct SkySettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare, NightVision };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
@@ -167,7 +167,7 @@ struct PostfxSettings {
     //! chain still ends with a clamp and the sRGB encoding.
     std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,      PostEffect::Bloom,
                                   PostEffect::LensFlare,  PostEffect::Exposure, PostEffect::Tonemap,
-                                  PostEffect::Grade,      PostEffect::Fxaa};
+                                  PostEffect::Grade,      PostEffect::NightVision, PostEffect::Fxaa};
 };
 
 enum class ExposureMode : int { Manual, Auto };
@@ -221,6 +221,19 @@ struct GradeSettings {
     float saturation = 1.0f;       //!< 0 grey, 1 unchanged, 0..4
     float vignette = 0.0f;         //!< darkening at the corners (0 none, 1 black), 0..1
     float vignette_start = 0.5f;   //!< share of the centre-to-corner distance where the darkening begins, 0..1
+    float grain = 0.0f;            //!< film grain amplitude at mid-grey (fades to 0 at black and white), 0..1
+    float grain_rate = 24.0f;      //!< 1/s, new grain pattern this many times per second of scene time, 0..1000
+};
+
+//! Night vision (as 000's): luminance amplified, noise, a green phosphor tint and a round
+//! scope vignette; on the display image (place it after tonemap).
+struct NightVisionSettings {
+    bool enabled = false;
+    float gain = 6.0f;        //!< luminance amplification, 1..1000
+    float noise = 0.15f;      //!< noise amplitude, 0..1
+    float noise_rate = 30.0f; //!< 1/s, new noise pattern this many times per second of scene time, 0..1000
+    float vignette = 1.0f;    //!< darkening outside the scope circle (1 black), 0..1
+    glm::vec3 tint{0.25f, 1.0f, 0.3f};  //!< phosphor colour, 0..1
 };
 
 //! Screen-space ambient occlusion (horizon based, HBAO style) from depth and G-buffer normals,
@@ -300,6 +313,7 @@ struct Settings {
     DofSettings dof;            // [postfx.dof]
     MotionBlurSettings motion_blur;  // [postfx.motion_blur]
     LensFlareSettings lens_flare;    // [postfx.lens_flare]
+    NightVisionSettings night_vision;  // [postfx.night_vision]
 };
 
 // Lists every section and field of s to v, in file order.

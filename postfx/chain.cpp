@@ -80,6 +80,11 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                                                s.sky.sun_illuminance, dt, reset);
                 uses_flare = true;
                 break;
+            case PostEffect::NightVision:
+                if (!s.night_vision.enabled) break;
+                flush();
+                image = addNightVisionPass(graph, rc, image, s.night_vision);
+                break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
                 flush();

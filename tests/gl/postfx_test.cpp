@@ -911,3 +911,67 @@ TEST_CASE("gl: lens flare: none for a sun off screen or below the horizon, visib
     off.chainRun(image, w, h, s);
     CHECK(off.chain.lensFlare() == nullptr);
 }
+
+TEST_CASE("gl: film grain: zero-mean, strongest at mid-grey, none at black and white, the same for the same time") {
+    test::glContext();
+    const int w = 64, h = 32;
+    std::vector<float> image = uniform(w, h, 0.5f);
+    for (int y = 0; y < h; ++y) setPixel(image, w, 0, y, 0.0f), setPixel(image, w, 1, y, 1.0f);
+    GradeSettings g;
+    g.grain = 0.2f;
+    const auto grade = [&](double t) {
+        Bench bench;
+        return bench.run(image, w, h, t, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+            return addGradePass(graph, rc, in, g);
+        });
+    };
+    const std::vector<float> a = grade(1.0), same = grade(1.01), later = grade(1.5);
+    CHECK(a == same);  // the same pattern within 1/24 s
+    CHECK(a != later);
+    double sum = 0.0, largest = 0.0;
+    int n = 0;
+    for (int y = 0; y < h; ++y) {
+        CHECK(pixel(a, w, 0, y) == 0.0f);
+        CHECK(pixel(a, w, 1, y) == doctest::Approx(1.0f).epsilon(1e-6));
+        for (int x = 2; x < w; ++x) {
+            const double d = pixel(a, w, x, y) - 0.5;
+            sum += d, largest = std::max(largest, std::abs(d)), ++n;
+            CHECK(pixel(a, w, x, y, 0) == pixel(a, w, x, y, 1));  // grain in luminance, not colour
+        }
+    }
+    CHECK(std::abs(sum / n) < 0.005);   // zero mean (uniform in +-0.1)
+    CHECK(largest > 0.08);              // amplitude grain * 4 * 0.25 / 2 = 0.1 at mid-grey
+    CHECK(largest <= 0.1 + 1e-6);
+    CHECK(allFinite(a));
+}
+
+TEST_CASE("gl: night vision amplifies luminance into a green tint, darkens outside the scope, stays finite") {
+    test::glContext();
+    const int w = 64, h = 32;
+    std::vector<float> image = uniform(w, h, 0.02f);
+    setPixel(image, w, 28, 14, std::numeric_limits<float>::quiet_NaN());
+    Settings s;
+    s.postfx.order = {PostEffect::NightVision};
+    s.night_vision.enabled = true;
+    s.night_vision.noise = 0.0f;
+    Bench bench;
+    std::vector<float> out = bench.chainRun(image, w, h, s);
+    CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.night_vision", "postfx.encode"});
+    REQUIRE(allFinite(out));
+    const float centre_g = pixel(out, w, w / 2, h / 2, 1);
+    CHECK(centre_g == doctest::Approx(srgb(0.02f * 6.0f)).epsilon(0.02));  // gain 6, green tint 1
+    CHECK(pixel(out, w, w / 2, h / 2, 0) < centre_g);
+    CHECK(pixel(out, w, w / 2, h / 2, 2) < centre_g);
+    CHECK(pixel(out, w, 0, 0, 1) == 0.0f);  // outside the scope circle
+    CHECK(pixel(out, w, 28, 14, 1) == 0.0f);  // NaN: black, and only there
+    CHECK(pixel(out, w, 29, 14, 1) == doctest::Approx(centre_g));
+    s.night_vision.noise = 0.2f;
+    Bench noisy;
+    out = noisy.chainRun(image, w, h, s, 2.0);
+    REQUIRE(allFinite(out));
+    CHECK(pixel(out, w, w / 2, h / 2, 1) != pixel(out, w, w / 2 + 1, h / 2, 1));
+    s.night_vision.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK_FALSE(has(off.executed, "postfx.night_vision"));
+}
