@@ -58,7 +58,7 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
 }
 
 InputErrors FrameRenderer::prepare(const Settings& s) {
-    InputErrors errors;
+    InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
         terrain_.reset();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;

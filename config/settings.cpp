@@ -204,6 +204,7 @@ void describe(SettingsVisitor& v, GradeSettings& s) {
     v.field({"vignette_start", "", "share of the centre-to-corner distance where the darkening begins"}, s.vignette_start, 0.0f, 1.0f);
     v.field({"grain", "", "film grain amplitude at mid-grey (none at black and white)"}, s.grain, 0.0f, 1.0f);
     v.field({"grain_rate", "1/s", "new grain pattern this many times per second of scene time"}, s.grain_rate, 0.0f, 1000.0f);
+    v.field({"lut", "", "optional 3D LUT (.cube file), applied after saturation; empty: none"}, s.lut);
 }
 
 void describe(SettingsVisitor& v, NightVisionSettings& s) {

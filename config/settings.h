@@ -223,6 +223,7 @@ struct GradeSettings {
     float vignette_start = 0.5f;   //!< share of the centre-to-corner distance where the darkening begins, 0..1
     float grain = 0.0f;            //!< film grain amplitude at mid-grey (fades to 0 at black and white), 0..1
     float grain_rate = 24.0f;      //!< 1/s, new grain pattern this many times per second of scene time, 0..1000
+    std::string lut;               //!< optional 3D LUT (.cube), relative to the vista root; applied after saturation
 };
 
 //! Night vision (as 000's): luminance amplified, noise, a green phosphor tint and a round

@@ -5,6 +5,7 @@
 #include "postfx/bloom.h"
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
+#include "postfx/lut.h"
 #include "sky/atmosphere.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
@@ -55,7 +56,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
             case PostEffect::Grade:
                 if (!s.grade.enabled) break;
                 flush();
-                image = addGradePass(graph, rc, image, s.grade);
+                image = addGradePass(graph, rc, image, s.grade, lut_.texture ? &lut_ : nullptr);
                 break;
             case PostEffect::Dof:
                 if (!s.dof.enabled || !depth.valid()) break;
@@ -100,6 +101,21 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
     return image;
+}
+
+InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& lut_file) {
+    InputErrors errors;
+    const std::string wanted = s.grade.enabled && !s.grade.lut.empty() ? lut_file.string() : std::string();
+    if (wanted == lut_path_) return errors;
+    lut_path_ = wanted;
+    lut_texture_ = {};
+    lut_ = {};
+    if (wanted.empty()) return errors;
+    if (std::optional<CubeLut> cube = loadCube(wanted, errors)) {
+        lut_texture_ = uploadCube(*cube, "postfx.grade lut");
+        lut_ = {lut_texture_.id(), cube->size, cube->domain_min, cube->domain_max};
+    }
+    return errors;
 }
 
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {

@@ -5,13 +5,16 @@
 // tone map still ends with "postfx.encode" (clamp and sRGB).
 #pragma once
 
+#include "config/input_error.h"
 #include "config/settings.h"
 #include "postfx/dof.h"
 #include "postfx/exposure.h"
+#include "postfx/grade.h"
 #include "postfx/lens_flare.h"
 #include "postfx/motion_blur.h"
 #include "renderer/render_context.h"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <utility>
@@ -34,12 +37,18 @@ public:
     const DepthOfField* dof() const { return dof_.get(); }
     // The lens flare's sun visibility, while the lens flare is in use (null otherwise).
     const LensFlare* lensFlare() const { return lens_flare_.get(); }
+    // Loads the files the settings name ([postfx.grade] lut, found at lut_file) when they
+    // changed; the problems (file:line) are returned and the LUT is then left out.
+    InputErrors prepare(const Settings& s, const std::filesystem::path& lut_file);
 
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
     std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
     std::unique_ptr<MotionBlur> motion_blur_;      // the previous frame's camera
     std::unique_ptr<LensFlare> lens_flare_;        // the smoothed sun visibility
+    gl::Texture lut_texture_;                      // [postfx.grade] lut, while grading uses one
+    GradeLut lut_;
+    std::string lut_path_;                         // as given, to notice changes
     double last_time_s_ = 0.0;
     bool has_time_ = false;
 };

@@ -11,7 +11,15 @@
 
 namespace vista {
 
-TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const GradeSettings& s);
+// A 3D LUT the grade applies (postfx/lut.h): texture, and the input range its ends map.
+struct GradeLut {
+    GLuint texture = 0;
+    int size = 0;
+    glm::vec3 domain_min{0.0f}, domain_max{1.0f};
+};
+
+TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const GradeSettings& s,
+                           const GradeLut* lut = nullptr);
 
 // "postfx.night_vision" (postfx/shaders/night_vision.glsl): same size and format.
 TextureHandle addNightVisionPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,

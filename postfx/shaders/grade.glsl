@@ -11,6 +11,11 @@ layout(location = 1) uniform vec3 u_inv_gamma;  // 1 / gamma
 layout(location = 2) uniform vec3 u_gain;
 layout(location = 3) uniform vec3 u_shape;      // saturation, vignette, vignette_start
 layout(location = 4) uniform vec2 u_grain;      // amplitude, pattern index (from scene time)
+#ifdef GRADE_LUT
+layout(binding = BINDING_TEX_1) uniform sampler3D u_lut;
+layout(location = 5) uniform vec3 u_lut_scale;   // domain to texture coordinates: c * scale + offset
+layout(location = 6) uniform vec3 u_lut_offset;
+#endif
 layout(location = 0) out vec4 o_color;
 
 // A uniform value in [0, 1) per pixel and pattern (integer hash, the same on every GPU).
@@ -29,6 +34,9 @@ void main() {
     c = pow(max(c, vec3(0.0)), u_inv_gamma);
     float l = dot(c, vec3(0.2126, 0.7152, 0.0722));
     c = max(mix(vec3(l), c, u_shape.x), vec3(0.0));
+#ifdef GRADE_LUT
+    c = max(texture(u_lut, c * u_lut_scale + u_lut_offset).rgb, vec3(0.0));
+#endif
     // 0 at the centre, 1 in the corners, round on screen.
     vec2 d = (gl_FragCoord.xy / size - 0.5) * vec2(size.x / size.y, 1.0);
     float r = length(d) / length(vec2(0.5 * size.x / size.y, 0.5));

@@ -8,6 +8,7 @@
 #include "postfx/dof.h"
 #include "postfx/fxaa.h"
 #include "postfx/lens_flare.h"
+#include "postfx/lut.h"
 #include "sky/atmosphere.h"
 #include "postfx/motion_blur.h"
 #include "postfx/grade.h"
@@ -974,4 +975,45 @@ TEST_CASE("gl: night vision amplifies luminance into a green tint, darkens outsi
     Bench off;
     off.chainRun(image, w, h, s);
     CHECK_FALSE(has(off.executed, "postfx.night_vision"));
+}
+
+TEST_CASE("gl: an identity 3D LUT changes nothing, an inverting one inverts") {
+    test::glContext();
+    const int w = 64, h = 36;
+    std::vector<float> image = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = (std::size_t(y) * w + std::size_t(x)) * 4;
+            image[i] = float(x) / float(w - 1), image[i + 1] = float(y) / float(h - 1), image[i + 2] = 0.3f;
+        }
+    const auto lutOf = [](int n, bool invert) {
+        CubeLut lut;
+        lut.size = n;
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const glm::vec3 c = glm::vec3(r, g, b) / float(n - 1);
+                    lut.table.push_back(invert ? 1.0f - c : c);
+                }
+        return lut;
+    };
+    GradeSettings g;
+    const auto grade = [&](const CubeLut* cube) {
+        gl::Texture texture;
+        GradeLut l;
+        if (cube) texture = uploadCube(*cube, "test lut"), l = {texture.id(), cube->size, cube->domain_min, cube->domain_max};
+        Bench bench;
+        return bench.run(image, w, h, 0.0, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+            return addGradePass(graph, rc, in, g, cube ? &l : nullptr);
+        });
+    };
+    const std::vector<float> plain = grade(nullptr);
+    const CubeLut identity = lutOf(17, false), inverse = lutOf(17, true);
+    std::vector<float> out = grade(&identity);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < out.size(); ++i) largest = std::max(largest, std::abs(out[i] - plain[i]));
+    CHECK(largest < 1e-3f);  // filtering weights have 8 bits on llvmpipe
+    out = grade(&inverse);
+    CHECK(pixel(out, w, 10, 20, 0) == doctest::Approx(1.0f - 10.0f / 63.0f).epsilon(1e-3));
+    CHECK(pixel(out, w, 10, 20, 2) == doctest::Approx(0.7f).epsilon(1e-3));
 }

@@ -2,6 +2,7 @@
 // the constants the post effects share with their shaders.
 #include "config/ini.h"
 #include "postfx/dof.h"
+#include "postfx/lut.h"
 #include "postfx/postfx_bindings.h"
 
 #include <doctest/doctest.h>
@@ -88,4 +89,38 @@ TEST_CASE("postfx: depth of field's circle of confusion is the thin-lens formula
     CHECK(dofCocRadiusPx(20.0, 10.0, s, 1000) == doctest::Approx(1.30863 / 2.0).epsilon(1e-5));  // stopping down halves it
     CHECK(dofClampDiopters(100.0f, s) == doctest::Approx(10.0f));  // focus no closer than twice the focal length
     CHECK(dofClampDiopters(-1.0f, s) == 0.0f);
+}
+
+TEST_CASE("postfx: .cube LUTs parse, and every malformed line is an error naming file:line") {
+    InputErrors e;
+    std::optional<CubeLut> lut = parseCube("# a comment\nTITLE \"x\"\nLUT_3D_SIZE 2\nDOMAIN_MIN 0 0 0\n"
+                                           "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n",
+                                           "id.cube", e);
+    CHECK(e.empty());
+    REQUIRE(lut);
+    CHECK(lut->size == 2);
+    REQUIRE(lut->table.size() == 8);
+    CHECK(lut->table[1] == glm::vec3(1, 0, 0));  // red fastest
+    CHECK(lut->table[2] == glm::vec3(0, 1, 0));
+    CHECK(lut->table[4] == glm::vec3(0, 0, 1));
+
+    e.clear();
+    CHECK_FALSE(parseCube("LUT_3D_SIZE 2\n0 0 0\n1 0 x\n0 1 0\n1 1 0 7\n", "bad.cube", e));
+    REQUIRE(e.size() == 2);
+    CHECK(e[0].str() == "bad.cube:3: '1 0 x' is not a keyword (TITLE, LUT_3D_SIZE, DOMAIN_MIN, DOMAIN_MAX) or three numbers");
+    CHECK(e[1].line == 5);
+    e.clear();
+    CHECK_FALSE(parseCube("LUT_3D_SIZE 1\n", "small.cube", e));
+    REQUIRE(e.size() == 1);
+    CHECK(e[0].str().find("small.cube:1: LUT_3D_SIZE 1 is not accepted") == 0);
+    e.clear();
+    CHECK_FALSE(parseCube("LUT_3D_SIZE 2\n0 0 0\n", "short.cube", e));
+    REQUIRE(e.size() == 1);
+    CHECK(e[0].message == "1 entries; LUT_3D_SIZE 2 needs 8");
+    e.clear();
+    CHECK_FALSE(parseCube("0 0 0\n", "early.cube", e));
+    CHECK(e.at(0).str() == "early.cube:1: data before LUT_3D_SIZE");
+    e.clear();
+    CHECK_FALSE(loadCube("/nonexistent/x.cube", e));
+    CHECK(e.size() == 1);
 }
