@@ -2,13 +2,14 @@
 #   make demo   build and run the default scene (a window, or a headless capture to out/ without a display)
 #   make test   build and run every test through ctest
 #   make bench  build and print the per-pass frame benchmark
+#   make golden build and rewrite the golden images (tests/golden/*.png) from this build
 BUILD_DIR  ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
 PACKAGES   := $(shell grep -v '^\#' tools/debian-packages.txt)
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench clean
+.PHONY: all deps configure build demo test bench golden clean
 
 all: build
 
@@ -34,6 +35,9 @@ test: build
 
 bench: build
 	./$(BUILD_DIR)/vista bench frame
+
+golden: build
+	VISTA_UPDATE_GOLDEN=1 ./$(BUILD_DIR)/tests/vista_gl_tests -tc="gl: golden images*"
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

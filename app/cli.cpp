@@ -1,6 +1,8 @@
 // Subcommands and their options; each one loads the scene the same way and hands over to
 // the window loop, the capture runner or the checker.
 #include "app/cli.h"
+#include "config/ini.h"
+#include "config/presets.h"
 
 #include "app/bench_grass.h"
 #include "app/bench_lights.h"
@@ -40,15 +42,22 @@ bool parseSize(const std::string& size, int& width, int& height) {
 struct SceneOptions {
     std::string config;
     std::vector<std::string> overrides;
+    std::string preset;
 
     void add(CLI::App* cmd) {
         cmd->add_option("-c,--config", config, "scene file (default: config/default.ini)");
         cmd->add_option("--set", overrides, "override a scene key: --set section.key=value (repeatable)");
+        cmd->add_option("--preset", preset, "quality preset over the scene's knobs (--set still wins)")
+            ->check(CLI::IsMember({"low", "medium", "high", "ultra", "reference"}));
     }
     // Loads the scene; prints every problem and returns false on bad input.
     bool load(Settings& s) const {
         std::filesystem::path file = config.empty() ? defaultScenePath() : resolveInput(config);
         InputErrors errors = loadScene(file, overrides, s);
+        if (errors.empty() && !preset.empty()) {
+            applyQualityPreset(s, *qualityPresetFromName(preset));
+            for (const std::string& o : overrides) applyOverride(o, s);  // valid: loadScene took them
+        }
         printErrors(errors);
         return errors.empty();
     }

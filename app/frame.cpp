@@ -65,7 +65,7 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
 }
 
 InputErrors FrameRenderer::prepare(const Settings& s) {
-    InputErrors errors;
+    InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
         terrain_.reset();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;
@@ -289,7 +289,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
-    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s);
+    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth);
     if (s.debug.view == DebugView::ShadowMap)
         display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
     else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image

@@ -76,7 +76,7 @@ public:
         tooltip(f, "");
     }
     // An ordered list of names (the post chain): one row per entry with up / down / remove
-    // buttons, and a combo that appends a name not listed yet.
+    // buttons, drag and drop between rows, and a combo that appends a name not listed yet.
     void sequence(const FieldInfo& f, std::vector<int>& v, std::span<const char* const> names) override {
         if (!section_open_) return;
         ImGui::TextUnformatted(f.key);
@@ -91,8 +91,28 @@ public:
             ImGui::SameLine();
             const bool remove = ImGui::SmallButton("x");
             ImGui::SameLine();
-            ImGui::TextUnformatted(known ? names[std::size_t(v[i])] : "?");
+            ImGui::Selectable(known ? names[std::size_t(v[i])] : "?");
+            // Drag an entry onto another to move it there (the buttons do the same a step at a time).
+            if (ImGui::BeginDragDropSource()) {
+                const int from = int(i);
+                ImGui::SetDragDropPayload("vista.sequence", &from, sizeof from);
+                ImGui::TextUnformatted(known ? names[std::size_t(v[i])] : "?");
+                ImGui::EndDragDropSource();
+            }
+            int moved_from = -1;
+            if (ImGui::BeginDragDropTarget()) {
+                if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload("vista.sequence"))
+                    moved_from = *static_cast<const int*>(payload->Data);
+                ImGui::EndDragDropTarget();
+            }
             ImGui::PopID();
+            if (moved_from >= 0 && std::size_t(moved_from) < v.size() && std::size_t(moved_from) != i) {
+                const int entry = v[std::size_t(moved_from)];
+                v.erase(v.begin() + moved_from);
+                v.insert(v.begin() + std::ptrdiff_t(i), entry);
+                changed = true;
+                break;
+            }
             if (remove) {
                 v.erase(v.begin() + std::ptrdiff_t(i));
                 changed = true;

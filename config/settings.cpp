@@ -178,7 +178,8 @@ void describe(SettingsVisitor& v, SkySettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 5> effects{"bloom", "exposure", "tonemap", "fxaa", "grade"};
+    static constexpr std::array<const char*, 9> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
+                                                        "motion_blur", "lens_flare", "night_vision"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -233,6 +234,19 @@ void describe(SettingsVisitor& v, GradeSettings& s) {
     v.field({"saturation", "", "0 grey, 1 unchanged"}, s.saturation, 0.0f, 4.0f);
     v.field({"vignette", "", "darkening at the corners, 0 none, 1 black"}, s.vignette, 0.0f, 1.0f);
     v.field({"vignette_start", "", "share of the centre-to-corner distance where the darkening begins"}, s.vignette_start, 0.0f, 1.0f);
+    v.field({"grain", "", "film grain amplitude at mid-grey (none at black and white)"}, s.grain, 0.0f, 1.0f);
+    v.field({"grain_rate", "1/s", "new grain pattern this many times per second of scene time"}, s.grain_rate, 0.0f, 1000.0f);
+    v.field({"lut", "", "optional 3D LUT (.cube file), applied after saturation; empty: none"}, s.lut);
+}
+
+void describe(SettingsVisitor& v, NightVisionSettings& s) {
+    v.section("postfx.night_vision", "night vision: amplified luminance, noise, green tint, scope vignette");
+    v.field({"enabled", "", "night vision (place it after tonemap)"}, s.enabled);
+    v.field({"gain", "", "luminance amplification"}, s.gain, 1.0f, 1000.0f);
+    v.field({"noise", "", "noise amplitude"}, s.noise, 0.0f, 1.0f);
+    v.field({"noise_rate", "1/s", "new noise pattern this many times per second of scene time"}, s.noise_rate, 0.0f, 1000.0f);
+    v.field({"vignette", "", "darkening outside the scope circle, 1 black"}, s.vignette, 0.0f, 1.0f);
+    v.field({"tint", "", "phosphor colour"}, s.tint, 0.0f, 1.0f);
 }
 
 void describe(SettingsVisitor& v, SsaoSettings& s) {
@@ -272,6 +286,48 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
 }
 
+void describe(SettingsVisitor& v, DofSettings& s) {
+    v.section("postfx.dof", "depth of field: thin-lens circle of confusion, autofocus, near/far gather");
+    v.field({"enabled", "", "blur what is out of focus (needs the scene depth)"}, s.enabled);
+    v.field({"focus_distance_m", "m", "focus distance when autofocus is off"}, s.focus_distance_m, 0.1f, 1.0e6f);
+    v.field({"focal_length_mm", "mm", "lens focal length"}, s.focal_length_mm, 1.0f, 2000.0f);
+    v.field({"f_stop", "", "f-number N: aperture diameter = focal length / N"}, s.f_stop, 0.5f, 64.0f);
+    v.field({"sensor_height_mm", "mm", "sensor height: CoC in pixels = CoC on the sensor / sensor height * image height"},
+            s.sensor_height_mm, 1.0f, 100.0f);
+    v.field({"autofocus", "", "focus on the screen centre (median of 5 depth samples)"}, s.autofocus);
+    v.field({"autofocus_rate", "1/s", "autofocus speed: the gap (in diopters) falls by e in 1/rate s"}, s.autofocus_rate,
+            0.01f, 100.0f);
+    v.field({"max_coc_px", "px", "largest blur radius"}, s.max_coc_px, 1.0f, 64.0f);
+    v.field({"samples", "", "gather taps per pixel (quality knob)"}, s.samples, 4, 256);
+    v.field({"debug", "", "show the circle of confusion: red far, green near, blue in focus"}, s.debug);
+}
+
+void describe(SettingsVisitor& v, MotionBlurSettings& s) {
+    v.section("postfx.motion_blur", "camera motion blur: depth reprojection, tile/neighbour max, McGuire 2012 gather");
+    v.field({"enabled", "", "blur by the camera's motion (needs the scene depth)"}, s.enabled);
+    v.field({"shutter_deg", "deg", "shutter angle: exposure = shutter / 360 / frame_rate seconds"}, s.shutter_deg, 0.0f, 360.0f);
+    v.field({"frame_rate", "1/s", "film rate the shutter angle refers to (not the render rate)"}, s.frame_rate, 1.0f, 1000.0f);
+    v.field({"max_blur_px", "px", "longest blur, half on each side of a pixel; also the tile size"}, s.max_blur_px, 2.0f, 64.0f);
+    v.field({"samples", "", "gather taps per pixel (quality knob)"}, s.samples, 2, 64);
+    v.field({"depth_extent", "", "relative depth difference over which foreground and background blend"},
+            s.depth_extent, 0.001f, 1.0f);
+}
+
+void describe(SettingsVisitor& v, LensFlareSettings& s) {
+    v.section("postfx.lens_flare", "sun lens flare: ghosts, halo, chromatic aberration, starburst, faded by visibility");
+    v.field({"enabled", "", "add a lens flare while the sun is on screen and above the horizon"}, s.enabled);
+    v.field({"intensity", "", "flare radiance per unit sun illuminance"}, s.intensity, 0.0f, 1.0f);
+    v.field({"ghosts", "", "ghost discs along the sun-to-centre axis"}, s.ghosts, 0, 16);
+    v.field({"ghost_spacing", "", "ghost spacing along the axis (1 = sun to centre)"}, s.ghost_spacing, 0.01f, 2.0f);
+    v.field({"halo_radius", "", "halo ring radius, share of the image height"}, s.halo_radius, 0.0f, 2.0f);
+    v.field({"chromatic", "", "red/blue separation along the axis"}, s.chromatic, 0.0f, 0.5f);
+    v.field({"starburst", "", "strength of the rays around the sun"}, s.starburst, 0.0f, 10.0f);
+    v.field({"visibility_radius_deg", "deg", "radius of the 16 depth samples around the sun"}, s.visibility_radius_deg,
+            0.01f, 10.0f);
+    v.field({"visibility_rate", "1/s", "visibility follows the sky share of the samples by e in 1/rate s"},
+            s.visibility_rate, 0.01f, 100.0f);
+}
+
 }  // namespace
 
 bool isValidListName(std::string_view name) {
@@ -297,6 +353,10 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.fxaa);
     describe(v, s.grade);
     describe(v, s.ssao);
+    describe(v, s.dof);
+    describe(v, s.motion_blur);
+    describe(v, s.lens_flare);
+    describe(v, s.night_vision);
 }
 
 }  // namespace vista

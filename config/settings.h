@@ -191,15 +191,16 @@ struct SkySettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare, NightVision };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
     //! Effects in the order they run on the image. Effects before `tonemap` see linear HDR,
     //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
     //! chain still ends with a clamp and the sRGB encoding.
-    std::vector<PostEffect> order{PostEffect::Bloom, PostEffect::Exposure, PostEffect::Tonemap, PostEffect::Grade,
-                                  PostEffect::Fxaa};
+    std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,      PostEffect::Bloom,
+                                  PostEffect::LensFlare,  PostEffect::Exposure, PostEffect::Tonemap,
+                                  PostEffect::Grade,      PostEffect::NightVision, PostEffect::Fxaa};
 };
 
 enum class ExposureMode : int { Manual, Auto };
@@ -253,6 +254,20 @@ struct GradeSettings {
     float saturation = 1.0f;       //!< 0 grey, 1 unchanged, 0..4
     float vignette = 0.0f;         //!< darkening at the corners (0 none, 1 black), 0..1
     float vignette_start = 0.5f;   //!< share of the centre-to-corner distance where the darkening begins, 0..1
+    float grain = 0.0f;            //!< film grain amplitude at mid-grey (fades to 0 at black and white), 0..1
+    float grain_rate = 24.0f;      //!< 1/s, new grain pattern this many times per second of scene time, 0..1000
+    std::string lut;               //!< optional 3D LUT (.cube), relative to the vista root; applied after saturation
+};
+
+//! Night vision (as 000's): luminance amplified, noise, a green phosphor tint and a round
+//! scope vignette; on the display image (place it after tonemap).
+struct NightVisionSettings {
+    bool enabled = false;
+    float gain = 6.0f;        //!< luminance amplification, 1..1000
+    float noise = 0.15f;      //!< noise amplitude, 0..1
+    float noise_rate = 30.0f; //!< 1/s, new noise pattern this many times per second of scene time, 0..1000
+    float vignette = 1.0f;    //!< darkening outside the scope circle (1 black), 0..1
+    glm::vec3 tint{0.25f, 1.0f, 0.3f};  //!< phosphor colour, 0..1
 };
 
 //! Screen-space ambient occlusion (horizon based, HBAO style) from depth and G-buffer normals,
@@ -297,6 +312,50 @@ struct ShadowSettings {
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
 };
 
+//! Depth of field: a thin-lens circle of confusion from the focus distance, focal length and
+//! f-stop (postfx/dof.h has the formula), autofocus on the screen centre smoothed over time, and
+//! a gather blur with a separate near field so that the foreground bleeds over what is in focus.
+struct DofSettings {
+    bool enabled = false;
+    float focus_distance_m = 50.0f;  //!< m, focus distance when autofocus is off, 0.1..1e6
+    float focal_length_mm = 50.0f;   //!< mm, lens focal length, 1..2000
+    float f_stop = 2.8f;             //!< f-number N (aperture diameter = focal length / N), 0.5..64
+    float sensor_height_mm = 24.0f;  //!< mm, sensor height (maps the CoC to pixels of the image height), 1..100
+    bool autofocus = true;           //!< focus on the screen centre (median of 5 depth samples)
+    float autofocus_rate = 4.0f;     //!< 1/s, the focus (in diopters) closes the gap by e in 1/rate s, 0.01..100
+    float max_coc_px = 16.0f;        //!< px, largest blur radius, 1..64
+    int samples = 32;                //!< gather taps per pixel (Vogel disk), 4..256
+    bool debug = false;              //!< the CoC replaces the final image: red far, green near, blue in focus
+};
+
+//! Camera motion blur after McGuire et al. 2012: per-pixel velocity from depth reprojected with
+//! the previous frame's camera, tile max and neighbour max velocity, and a gather with depth
+//! comparisons. The blur covers the motion during the exposure shutter_deg / 360 / frame_rate
+//! seconds, whatever the rate frames are rendered at.
+struct MotionBlurSettings {
+    bool enabled = false;
+    float shutter_deg = 180.0f;   //!< deg, shutter angle: exposure = shutter / 360 of a frame at frame_rate, 0..360
+    float frame_rate = 30.0f;     //!< 1/s, the film rate the shutter angle refers to, 1..1000
+    float max_blur_px = 20.0f;    //!< px, longest blur (half each side; also the tile size), 2..64
+    int samples = 12;             //!< gather taps per pixel, 2..64
+    float depth_extent = 0.02f;   //!< relative depth difference over which foreground/background blend, 0.001..1
+};
+
+//! Lens flare from the sun (after Chapman 2013's parts, drawn from the sun's screen position):
+//! ghosts along the sun-to-centre axis, a halo, chromatic aberration and a starburst, scaled by
+//! the sun's visibility (the share of depth samples around it that see the sky, smoothed).
+struct LensFlareSettings {
+    bool enabled = false;
+    float intensity = 0.002f;        //!< flare radiance per unit sun illuminance, 0..1
+    int ghosts = 5;                  //!< ghost discs along the axis, 0..16
+    float ghost_spacing = 0.45f;     //!< spacing of the ghosts along the sun-to-centre axis (1 = sun to centre), 0.01..2
+    float halo_radius = 0.45f;       //!< halo ring radius, share of the image height, 0..2
+    float chromatic = 0.03f;         //!< red/blue separation along the axis, 0..0.5
+    float starburst = 1.0f;          //!< strength of the rays around the sun, 0..10
+    float visibility_radius_deg = 0.5f;  //!< deg, radius of the depth samples around the sun, 0.01..10
+    float visibility_rate = 8.0f;    //!< 1/s, visibility follows its target by e in 1/rate s, 0.01..100
+};
+
 struct Settings {
     WindowSettings window;
     CameraSettings camera;
@@ -314,6 +373,10 @@ struct Settings {
     FxaaSettings fxaa;          // [postfx.fxaa]
     GradeSettings grade;        // [postfx.grade]
     SsaoSettings ssao;          // [postfx.ssao]
+    DofSettings dof;            // [postfx.dof]
+    MotionBlurSettings motion_blur;  // [postfx.motion_blur]
+    LensFlareSettings lens_flare;    // [postfx.lens_flare]
+    NightVisionSettings night_vision;  // [postfx.night_vision]
 };
 
 // Lists every section and field of s to v, in file order.

@@ -5,12 +5,15 @@
 #include "postfx/bloom.h"
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
+#include "postfx/lut.h"
+#include "sky/atmosphere.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
 namespace vista {
 
-TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s) {
+TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+                                   TextureHandle depth) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
     const bool reset = !has_time_ || dt < 0.0;
     last_time_s_ = rc.time_s;
@@ -19,7 +22,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded
     ExposureInput exposure;
-    bool uses_auto = false;
+    bool uses_auto = false, uses_dof = false, uses_motion_blur = false, uses_flare = false;
+    TextureHandle debug_view;  // an effect's debug view replaces the display (later effects are culled)
     auto flush = [&] {
         if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
         exposure = {};
@@ -52,7 +56,35 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
             case PostEffect::Grade:
                 if (!s.grade.enabled) break;
                 flush();
-                image = addGradePass(graph, rc, image, s.grade);
+                image = addGradePass(graph, rc, image, s.grade, lut_.texture ? &lut_ : nullptr);
+                break;
+            case PostEffect::Dof:
+                if (!s.dof.enabled || !depth.valid()) break;
+                flush();
+                if (!dof_) dof_ = std::make_unique<DepthOfField>();
+                image = dof_->addPasses(graph, rc, image, depth, s.dof, dt, reset);
+                uses_dof = true;
+                if (s.dof.debug) debug_view = image;
+                break;
+            case PostEffect::MotionBlur:
+                if (!s.motion_blur.enabled || !depth.valid()) break;
+                flush();
+                if (!motion_blur_) motion_blur_ = std::make_unique<MotionBlur>();
+                image = motion_blur_->addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
+                uses_motion_blur = true;
+                break;
+            case PostEffect::LensFlare:
+                if (!s.lens_flare.enabled || !depth.valid()) break;
+                flush();
+                if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
+                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, sunDirection(s.sky),
+                                               s.sky.sun_illuminance, dt, reset);
+                uses_flare = true;
+                break;
+            case PostEffect::NightVision:
+                if (!s.night_vision.enabled) break;
+                flush();
+                image = addNightVisionPass(graph, rc, image, s.night_vision);
                 break;
             case PostEffect::Fxaa:
                 if (!s.fxaa.enabled) break;
@@ -62,15 +94,35 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
         }
     }
     if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
+    if (!uses_dof) dof_.reset();
+    if (!uses_motion_blur) motion_blur_.reset();
+    if (!uses_flare) lens_flare_.reset();
+    if (debug_view.valid()) return debug_view;
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
     return image;
 }
 
+InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& lut_file) {
+    InputErrors errors;
+    const std::string wanted = s.grade.enabled && !s.grade.lut.empty() ? lut_file.string() : std::string();
+    if (wanted == lut_path_) return errors;
+    lut_path_ = wanted;
+    lut_texture_ = {};
+    lut_ = {};
+    if (wanted.empty()) return errors;
+    if (std::optional<CubeLut> cube = loadCube(wanted, errors)) {
+        lut_texture_ = uploadCube(*cube, "postfx.grade lut");
+        lut_ = {lut_texture_.id(), cube->size, cube->domain_min, cube->domain_max};
+    }
+    return errors;
+}
+
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
     for (auto list :
-         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms()})
+         {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
+          motionBlurPrograms(), lensFlarePrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

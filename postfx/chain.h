@@ -5,10 +5,16 @@
 // tone map still ends with "postfx.encode" (clamp and sRGB).
 #pragma once
 
+#include "config/input_error.h"
 #include "config/settings.h"
+#include "postfx/dof.h"
 #include "postfx/exposure.h"
+#include "postfx/grade.h"
+#include "postfx/lens_flare.h"
+#include "postfx/motion_blur.h"
 #include "renderer/render_context.h"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <utility>
@@ -21,12 +27,28 @@ public:
     // Adds the chain's passes for hdr; returns the display image. rc.time_s drives the
     // exposure adaptation: its change since the last call is the frame time (the first call,
     // or time going backwards, takes the metered exposure at once).
-    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s);
+    // depth: the scene's depth (reversed-Z) for the effects that need it (depth of field);
+    // without one those effects add no pass.
+    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+                            TextureHandle depth = {});
     // Auto exposure's state, while auto exposure is in use (null otherwise).
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
+    // Depth of field's autofocus state, while depth of field is in use (null otherwise).
+    const DepthOfField* dof() const { return dof_.get(); }
+    // The lens flare's sun visibility, while the lens flare is in use (null otherwise).
+    const LensFlare* lensFlare() const { return lens_flare_.get(); }
+    // Loads the files the settings name ([postfx.grade] lut, found at lut_file) when they
+    // changed; the problems (file:line) are returned and the LUT is then left out.
+    InputErrors prepare(const Settings& s, const std::filesystem::path& lut_file);
 
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
+    std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
+    std::unique_ptr<MotionBlur> motion_blur_;      // the previous frame's camera
+    std::unique_ptr<LensFlare> lens_flare_;        // the smoothed sun visibility
+    gl::Texture lut_texture_;                      // [postfx.grade] lut, while grading uses one
+    GradeLut lut_;
+    std::string lut_path_;                         // as given, to notice changes
     double last_time_s_ = 0.0;
     bool has_time_ = false;
 };

@@ -1,4 +1,5 @@
-// "postfx.grade": colour grading (postfx/shaders/grade.glsl); same size and format.
+// "postfx.grade": colour grading and film grain (postfx/shaders/grade.glsl); same size and
+// format. Night vision, a look of its own, lives here too.
 #pragma once
 
 #include "config/settings.h"
@@ -10,7 +11,19 @@
 
 namespace vista {
 
-TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const GradeSettings& s);
+// A 3D LUT the grade applies (postfx/lut.h): texture, and the input range its ends map.
+struct GradeLut {
+    GLuint texture = 0;
+    int size = 0;
+    glm::vec3 domain_min{0.0f}, domain_max{1.0f};
+};
+
+TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const GradeSettings& s,
+                           const GradeLut* lut = nullptr);
+
+// "postfx.night_vision" (postfx/shaders/night_vision.glsl): same size and format.
+TextureHandle addNightVisionPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
+                                 const NightVisionSettings& s);
 
 std::vector<std::pair<std::string, std::vector<std::string>>> gradePrograms();
 

@@ -12,6 +12,9 @@ constexpr int kHistogramBins = EXPOSURE_BINS;
 constexpr float kHistogramLogMin = float(EXPOSURE_LOG_MIN);  // log2 luminance of bin 1's lower edge
 constexpr float kHistogramLogMax = float(EXPOSURE_LOG_MAX);  // log2 luminance of the last bin's upper edge
 constexpr int kHistogramGroup = EXPOSURE_GROUP;              // compute workgroup side
+constexpr int kDofFocusBinding = POSTFX_BINDING_DOF_FOCUS;   // shader storage: DofFocusState (postfx/dof.h)
+constexpr int kFlareVisibilityBinding = POSTFX_BINDING_FLARE_VISIBILITY;  // shader storage: FlareVisibility (postfx/lens_flare.h)
+constexpr int kDofTile = DOF_TILE;                           // px per side of a depth-of-field near tile
 
 // std430 mirror of ExposureState in postfx/shaders/exposure_adapt.glsl.
 struct ExposureState {

@@ -1,5 +1,6 @@
 // "postfx.grade": lift/gamma/gain per channel (on display values, so grade belongs after the
-// tone map), saturation around Rec.709 luma, and a smooth vignette towards the corners.
+// tone map), saturation around Rec.709 luma, a smooth vignette towards the corners, and film
+// grain weighted by luminance (none at black and white), a new pattern grain_rate times a second.
 #include "../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -9,7 +10,20 @@ layout(location = 0) uniform vec3 u_lift;
 layout(location = 1) uniform vec3 u_inv_gamma;  // 1 / gamma
 layout(location = 2) uniform vec3 u_gain;
 layout(location = 3) uniform vec3 u_shape;      // saturation, vignette, vignette_start
+layout(location = 4) uniform vec2 u_grain;      // amplitude, pattern index (from scene time)
+#ifdef GRADE_LUT
+layout(binding = BINDING_TEX_1) uniform sampler3D u_lut;
+layout(location = 5) uniform vec3 u_lut_scale;   // domain to texture coordinates: c * scale + offset
+layout(location = 6) uniform vec3 u_lut_offset;
+#endif
 layout(location = 0) out vec4 o_color;
+
+// A uniform value in [0, 1) per pixel and pattern (integer hash, the same on every GPU).
+float hashNoise(uvec3 v) {
+    uint h = v.x * 1664525u + v.y * 22695477u + v.z * 2891336453u + 1013904223u;
+    h ^= h >> 16; h *= 2246822519u; h ^= h >> 13; h *= 3266489917u; h ^= h >> 16;
+    return float(h >> 8) / 16777216.0;
+}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -20,10 +34,19 @@ void main() {
     c = pow(max(c, vec3(0.0)), u_inv_gamma);
     float l = dot(c, vec3(0.2126, 0.7152, 0.0722));
     c = max(mix(vec3(l), c, u_shape.x), vec3(0.0));
+#ifdef GRADE_LUT
+    c = max(texture(u_lut, c * u_lut_scale + u_lut_offset).rgb, vec3(0.0));
+#endif
     // 0 at the centre, 1 in the corners, round on screen.
     vec2 d = (gl_FragCoord.xy / size - 0.5) * vec2(size.x / size.y, 1.0);
     float r = length(d) / length(vec2(0.5 * size.x / size.y, 0.5));
     c *= 1.0 - u_shape.y * smoothstep(u_shape.z, 1.0, r);
+    if (u_grain.x > 0.0) {
+        // Zero-mean grain, strongest at mid-grey: 4 l (1 - l) keeps black black and white white.
+        float lum = clamp(dot(c, vec3(0.2126, 0.7152, 0.0722)), 0.0, 1.0);
+        float g = hashNoise(uvec3(uvec2(p), uint(u_grain.y))) - 0.5;
+        c = max(c + u_grain.x * 4.0 * lum * (1.0 - lum) * g, vec3(0.0));
+    }
     o_color = vec4(c, src.a);
 }
 #endif

@@ -5,7 +5,12 @@
 #include "app/scene.h"
 #include "postfx/bloom.h"
 #include "postfx/chain.h"
+#include "postfx/dof.h"
 #include "postfx/fxaa.h"
+#include "postfx/lens_flare.h"
+#include "postfx/lut.h"
+#include "sky/atmosphere.h"
+#include "postfx/motion_blur.h"
 #include "postfx/grade.h"
 #include "postfx/ssao.h"
 #include "gl_fixture.h"
@@ -27,12 +32,13 @@ struct Bench {
     gl::VertexArray vao = gl::createVertexArray("postfx test");
     PostChain chain;
     std::vector<std::string> executed;
+    ViewParams camera;  // the view the passes see (its size is the image's)
 
     template <class AddPasses>
     std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add) {
         gl::Texture input = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "postfx test input");
         glTextureSubImage2D(input.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-        ViewParams view;
+        ViewParams view = camera;
         view.width = w, view.height = h;
         RenderContext rc{shaders, device, vao.id(), view, ViewMatrices{}, 0, time_s};
         FrameGraph graph;
@@ -515,4 +521,499 @@ TEST_CASE("gl: grading is neutral at its defaults, lifts, gains, desaturates and
     CHECK(pixel(out, w, 0, 0) < 0.05f);                                         // the corner nearly black
     CHECK(pixel(out, w, 0, 0) == doctest::Approx(pixel(out, w, w - 1, h - 1)).epsilon(1e-4));
     CHECK(allFinite(out));
+}
+
+namespace {
+
+// A reversed-Z depth image (near 0.1 m, infinite far) from distances in metres (inf: sky).
+std::vector<float> depthFromDistances(const std::vector<float>& distances, float near_m = 0.1f) {
+    std::vector<float> d;
+    for (float s : distances) d.push_back(std::isinf(s) ? 0.0f : near_m / s);
+    return d;
+}
+
+// Runs add(graph, rc, image, depth) on an RGBA32F image and a Depth32F depth (rows bottom first).
+template <class AddPasses>
+std::vector<float> runWithDepth(Bench& bench, const std::vector<float>& rgba, const std::vector<float>& depth, int w,
+                                int h, double time_s, AddPasses&& add) {
+    gl::Texture d = gl::Texture::create2D(w, h, GL_DEPTH_COMPONENT32F, 1, "test depth");
+    glTextureSubImage2D(d.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    return bench.run(rgba, w, h, time_s, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
+        TextureHandle dh = g.importTexture("depth", {w, h, PixelFormat::Depth32F}, d.id());
+        return add(g, rc, in, dh);
+    });
+}
+
+Settings dofOnly() {
+    Settings s;
+    s.postfx.order = {PostEffect::Dof};
+    s.dof.enabled = true;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("gl: depth of field's circle of confusion matches the thin-lens closed form") {
+    test::glContext();
+    const int w = 64, h = 36;
+    DofSettings s;
+    s.enabled = true;
+    s.autofocus = false;
+    s.focus_distance_m = 8.0f;
+    s.focal_length_mm = 85.0f;
+    s.f_stop = 1.8f;
+    s.max_coc_px = 4.0f;
+    std::vector<float> distances;
+    for (int i = 0; i < w * h; ++i) distances.push_back(i == 0 ? INFINITY : 0.5f * std::pow(1.01f, float(i % 700)));
+    Bench bench;
+    const std::vector<float> out = runWithDepth(bench, uniform(w, h, 0.3f), depthFromDistances(distances), w, h, 0.0,
+        [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle depth) {
+            return addDofCocPass(g, rc, in, depth, s, {});
+        });
+    REQUIRE(allFinite(out));
+    int clamped = 0, checked = 0;
+    for (int i = 0; i < w * h; ++i) {
+        // The distance the shader sees: the stored float depth turned back into metres.
+        const double stored = double(depthFromDistances({distances[std::size_t(i)]})[0]);
+        const double distance = stored > 0.0 ? 0.1 / stored : INFINITY;
+        const double expected = std::clamp(dofCocRadiusPx(distance, 8.0, s, h), -4.0, 4.0);
+        const float got = out[std::size_t(i) * 4 + 3];
+        INFO("distance " << distance << " m");
+        CHECK(got == doctest::Approx(expected).epsilon(2e-3).scale(1.0));  // half float: 11 bits
+        if (std::abs(expected) >= 4.0) ++clamped;
+        ++checked;
+        CHECK(out[std::size_t(i) * 4] == doctest::Approx(0.3f).epsilon(1e-3));
+    }
+    CHECK(clamped > 0);
+    CHECK(clamped < checked);
+    // The sky: f^2 / (N (S1 - f)) on the sensor, times height / sensor, halved.
+    const double f = 0.085, sky = 0.5 * f * f / (1.8 * (8.0 - f)) / 0.024 * h;
+    CHECK(out[3] == doctest::Approx(sky).epsilon(2e-3));
+}
+
+TEST_CASE("gl: autofocus moves smoothly at its rate, independent of the frame rate, and converges") {
+    test::glContext();
+    const int w = 48, h = 32;
+    Settings s = dofOnly();
+    s.dof.autofocus_rate = 2.0f;
+    const auto scene = [&](float centre_m) {
+        std::vector<float> d(std::size_t(w * h), 200.0f);
+        for (int y = h / 2 - 4; y <= h / 2 + 4; ++y)
+            for (int x = w / 2 - 4; x <= w / 2 + 4; ++x) d[std::size_t(y * w + x)] = centre_m;
+        return depthFromDistances(d);
+    };
+    const std::vector<float> image = uniform(w, h, 0.5f);
+    const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
+        runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
+            return bench.chain.addPasses(g, rc, in, s, dh);
+        });
+        REQUIRE(bench.chain.dof());
+        return bench.chain.dof()->read();
+    };
+    Bench fine, coarse;
+    postfx::DofFocusState st = frame(fine, scene(2.0f), 0.0);
+    CHECK(st.diopters == doctest::Approx(0.5f).epsilon(1e-4));  // the first frame takes it at once
+    CHECK(postfxPasses(fine.executed) ==
+          std::vector<std::string>{"postfx.dof.focus", "postfx.dof.coc", "postfx.dof.tiles", "postfx.dof.dilate",
+                                   "postfx.dof.gather", "postfx.encode"});
+    frame(coarse, scene(2.0f), 0.0);
+    // Focus pulls from 2 m to 20 m: 0.5 -> 0.05 diopters, in 30 frames of 1/30 s.
+    const std::vector<float> far = scene(20.0f);
+    const double dt = 1.0 / 30.0;
+    float previous = st.diopters;
+    for (int i = 1; i <= 30; ++i) {
+        st = frame(fine, far, i * dt);
+        const float gap = previous - 0.05f;
+        const float step = previous - st.diopters;
+        CHECK(step > 0.0f);                                         // moves towards the target, never past it
+        CHECK(step <= gap * s.dof.autofocus_rate * dt * 1.0001 + 1e-6);  // no step larger than rate * dt allows
+        CHECK(st.target == doctest::Approx(0.05f).epsilon(1e-4));
+        previous = st.diopters;
+    }
+    // After 1 s the gap has fallen by e^-2, whatever the frame rate.
+    CHECK(st.diopters - 0.05f == doctest::Approx(0.45 * std::exp(-2.0)).epsilon(1e-3));
+    const postfx::DofFocusState one = frame(coarse, far, 1.0);
+    CHECK(one.diopters == doctest::Approx(st.diopters).epsilon(1e-4));
+    for (int i = 31; i <= 150; ++i) st = frame(fine, far, i * dt);
+    CHECK(st.diopters == doctest::Approx(0.05f).epsilon(1e-3));  // converged after 5 s
+
+    // One odd sample of the five (a NaN, or a near object at a side sample) does not move it.
+    std::vector<float> odd = far;
+    odd[std::size_t((h / 2) * w + w / 2)] = std::numeric_limits<float>::quiet_NaN();
+    CHECK(frame(fine, odd, 6.0).target == doctest::Approx(0.05f).epsilon(1e-4));
+    s.dof.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK(off.chain.dof() == nullptr);
+    CHECK_FALSE(has(off.executed, "postfx.dof"));
+}
+
+TEST_CASE("gl: depth of field: sharp where in focus, the foreground bleeds over a sharp background, the background does not, NaN stays local") {
+    test::glContext();
+    const int w = 96, h = 48;
+    Settings s = dofOnly();
+    s.dof.autofocus = false;
+    s.dof.focus_distance_m = 10.0f;
+    s.dof.f_stop = 1.4f;
+    s.dof.focal_length_mm = 300.0f;  // the sky's radius: 6.6 px
+    s.dof.max_coc_px = 8.0f;
+    s.postfx.order = {PostEffect::Dof};
+    std::vector<float> image(std::size_t(w * h * 4), 1.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) setPixel(image, w, x, y, float((x * 7 + y * 3) % 11) / 10.0f);  // texture
+    const auto run = [&](const std::vector<float>& rgba, const std::vector<float>& distances) {
+        Bench bench;
+        return runWithDepth(bench, rgba, depthFromDistances(distances), w, h, 0.0,
+            [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
+                s.postfx.order = {PostEffect::Dof};
+                return bench.chain.addPasses(g, rc, in, s, dh);
+            });
+    };
+    std::vector<float> focused(std::size_t(w * h), 10.0f);
+    std::vector<float> out = run(image, focused);
+    // In focus: the encode of the input (same texture, sRGB), nothing moved.
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < out.size(); ++i) largest = std::max(largest, std::abs(out[i] - reference[i]));
+    CHECK(largest <= 1.0f / 255.0f);
+
+    // Left half near (0.5 m, white), right half in focus (black): the white bleeds into the black.
+    std::vector<float> split(image.size(), 0.0f), distances(std::size_t(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            setPixel(split, w, x, y, x < w / 2 ? 1.0f : 0.0f);
+            split[(std::size_t(y * w + x)) * 4 + 3] = 1.0f;
+            distances[std::size_t(y * w + x)] = x < w / 2 ? 0.5f : 10.0f;
+        }
+    out = run(split, distances);
+    REQUIRE(allFinite(out));
+    CHECK(pixel(out, w, w / 2 + 1, h / 2) > 0.2f);   // the blurred foreground edge covers the background
+    CHECK(pixel(out, w, w / 2 + 4, h / 2) > 0.0f);
+    CHECK(pixel(out, w, w / 2 + 10, h / 2) == 0.0f);  // beyond max_coc_px: untouched
+    CHECK(pixel(out, w, w / 2 - 1, h / 2) < 1.0f);    // and the foreground's own edge softens
+
+    // Left half in focus (black), right half far (1 km, white): the blurred background stays
+    // behind the sharp object.
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            setPixel(split, w, x, y, x < w / 2 ? 0.0f : 1.0f);
+            distances[std::size_t(y * w + x)] = x < w / 2 ? 10.0f : 1000.0f;
+        }
+    out = run(split, distances);
+    for (int x = 0; x < w / 2; ++x) CHECK(pixel(out, w, x, h / 2) == 0.0f);
+    CHECK(pixel(out, w, w / 2, h / 2) > 0.9f);
+
+    // Everything blurred (the sky at infinity), one NaN, one Inf and one 1e30 pixel: finite,
+    // and nothing changes beyond max_coc_px + 1 of them.
+    std::vector<float> sky(std::size_t(w * h), INFINITY);
+    const std::vector<float> clean = run(image, sky);
+    std::vector<float> dirty = image;
+    setPixel(dirty, w, 20, 20, std::numeric_limits<float>::quiet_NaN());
+    setPixel(dirty, w, 50, 20, std::numeric_limits<float>::infinity());
+    setPixel(dirty, w, 80, 30, 1e30f);
+    out = run(dirty, sky);
+    REQUIRE(allFinite(out));
+    int changed_far = 0, changed_near = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float d = std::min({std::hypot(float(x - 20), float(y - 20)), std::hypot(float(x - 50), float(y - 20)),
+                                      std::hypot(float(x - 80), float(y - 30))});
+            const bool differs = std::abs(pixel(out, w, x, y) - pixel(clean, w, x, y)) > 0.0f;
+            if (d > s.dof.max_coc_px + 1.5f) changed_far += differs;
+            else changed_near += differs;
+        }
+    CHECK(changed_far == 0);
+    CHECK(changed_near > 0);
+}
+
+TEST_CASE("gl: motion blur reprojection: camera-relative in double, exact far from the origin") {
+    ViewParams a{{1.0e7, 50.0, -3.0e6}, 30.0, -5.0, 60.0, 0.1, 64, 36};
+    ViewParams b = a;
+    b.position.x += 0.25;  // a quarter metre, 10,000 km from the origin
+    const glm::dmat4 m = reprojectionMatrix(a, b);
+    // A point 10 m ahead of b on its axis: in a's clip space it sits 0.25 m to the left.
+    const ViewMatrices vb = viewMatrices(b);
+    const glm::dvec3 p = 10.0 * vb.forward;  // camera-relative to b
+    const glm::dvec4 clip_b = glm::dmat4(vb.view_proj) * glm::dvec4(p, 1.0);
+    const glm::dvec4 ndc_b = clip_b / clip_b.w;
+    const glm::dvec4 prev = m * glm::dvec4(ndc_b.x, ndc_b.y, ndc_b.z, 1.0);
+    const glm::dvec4 expect = glm::dmat4(viewMatrices(a).view_proj) * glm::dvec4(p + glm::dvec3(0.25, 0.0, 0.0), 1.0);
+    CHECK(prev.x / prev.w == doctest::Approx(expect.x / expect.w).epsilon(1e-5));
+    CHECK(prev.y / prev.w == doctest::Approx(expect.y / expect.w).epsilon(1e-5));
+    CHECK(std::abs(prev.x / prev.w - ndc_b.x) > 0.01);  // it did move
+    const glm::dmat4 still = reprojectionMatrix(a, a);
+    const glm::dvec4 same = still * glm::dvec4(0.3, -0.2, 0.01, 1.0);
+    CHECK(same.x / same.w == doctest::Approx(0.3).epsilon(1e-6));
+    CHECK(same.y / same.w == doctest::Approx(-0.2).epsilon(1e-6));
+}
+
+TEST_CASE("gl: motion blur: a still camera leaves the image, a moving one blurs along the motion, a NaN stays local") {
+    test::glContext();
+    const int w = 96, h = 48;
+    Settings s;
+    s.postfx.order = {PostEffect::MotionBlur};
+    s.motion_blur.enabled = true;
+    s.motion_blur.max_blur_px = 16.0f;
+    const std::vector<float> plane(std::size_t(w * h), 0.1f / 20.0f);  // a wall 20 m ahead
+    std::vector<float> image = uniform(w, h, 0.0f);
+    setPixel(image, w, 48, 24, 1.0f);
+    const auto frames = [&](const std::vector<float>& rgba, double dx_m, double dt) {
+        Bench bench;
+        bench.camera = ViewParams{{1.0e6, 10.0, 0.0}, 0.0, 0.0, 60.0, 0.1, w, h};
+        const auto add = [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
+            return bench.chain.addPasses(g, rc, in, s, d);
+        };
+        runWithDepth(bench, rgba, plane, w, h, 0.0, add);
+        CHECK_FALSE(has(bench.executed, "postfx.motion_blur"));  // no previous frame
+        bench.camera.position.x += dx_m;
+        std::vector<float> out = runWithDepth(bench, rgba, plane, w, h, dt, add);
+        return std::make_pair(out, postfxPasses(bench.executed));
+    };
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+
+    auto [still, still_passes] = frames(image, 0.0, 1.0 / 30.0);
+    CHECK(still_passes == std::vector<std::string>{"postfx.encode"});  // nothing moved: no pass
+    CHECK(still == reference);
+
+    // 8 m to the right in 1/30 s: a point 20 m ahead moves 8 / 20 * 24 / tan(30 deg) = 16.6 px;
+    // at 180 deg and 30 fps half a frame is exposed: an 8.3 px streak, 4.2 px each side.
+    auto [moved, moved_passes] = frames(image, 8.0, 1.0 / 30.0);
+    CHECK(moved_passes == std::vector<std::string>{"postfx.motion_blur.velocity", "postfx.motion_blur.tiles",
+                                                   "postfx.motion_blur.neighbors", "postfx.motion_blur.gather",
+                                                   "postfx.encode"});
+    REQUIRE(allFinite(moved));
+    CHECK(pixel(moved, w, 48, 24) < pixel(reference, w, 48, 24));  // the dot's energy spread out
+    CHECK(pixel(moved, w, 51, 24) > 0.0f);                            // along x
+    CHECK(pixel(moved, w, 45, 24) > 0.0f);
+    CHECK(pixel(moved, w, 54, 24) == 0.0f);                           // no further than the blur
+    for (int dy : {-3, -2, -1, 1, 2, 3}) CHECK(pixel(moved, w, 48, 24 + dy) == 0.0f);  // not across it
+
+    // The same motion at twice the frame rate (half the displacement in half the time) blurs
+    // as far: the blur length does not depend on the render rate.
+    auto [fast, fast_passes] = frames(image, 4.0, 1.0 / 60.0);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < fast.size(); ++i) largest = std::max(largest, std::abs(fast[i] - moved[i]));
+    CHECK(largest <= 2.0f / 255.0f);
+
+    // NaN, Inf and 1e30 pixels: finite, nothing changes beyond the blur (4.2 px, k = 8 px) around them.
+    std::vector<float> textured = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) setPixel(textured, w, x, y, float((x * 7 + y * 3) % 11) / 10.0f);
+    const std::vector<float> clean = frames(textured, 8.0, 1.0 / 30.0).first;
+    std::vector<float> dirty = textured;
+    setPixel(dirty, w, 20, 20, std::numeric_limits<float>::quiet_NaN());
+    setPixel(dirty, w, 50, 10, std::numeric_limits<float>::infinity());
+    setPixel(dirty, w, 80, 30, 1e30f);
+    const std::vector<float> out = frames(dirty, 8.0, 1.0 / 30.0).first;
+    REQUIRE(allFinite(out));
+    int changed_far = 0, changed_near = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const bool near = (std::abs(y - 20) <= 1 && std::abs(x - 20) <= 9) || (std::abs(y - 10) <= 1 && std::abs(x - 50) <= 9) ||
+                              (std::abs(y - 30) <= 1 && std::abs(x - 80) <= 9);
+            const bool differs = pixel(out, w, x, y) != pixel(clean, w, x, y);
+            (near ? changed_near : changed_far) += differs;
+        }
+    CHECK(changed_far == 0);
+    CHECK(changed_near > 0);
+
+    s.motion_blur.enabled = false;
+    auto [off, off_passes] = frames(image, 8.0, 1.0 / 30.0);
+    CHECK(off_passes == std::vector<std::string>{"postfx.encode"});
+}
+
+TEST_CASE("gl: lens flare: none for a sun off screen or below the horizon, visibility is the sky share of the samples, smoothed") {
+    test::glContext();
+    const int w = 96, h = 64;
+    Settings s;
+    s.postfx.order = {PostEffect::LensFlare};
+    s.lens_flare.enabled = true;
+    s.lens_flare.visibility_radius_deg = 3.0f;
+    s.lens_flare.intensity = 0.1f;  // 0.3 at the sun over a 0.2 image
+    s.lens_flare.visibility_rate = 8.0f;
+    s.sky.sun_mode = SunMode::Angles;
+    s.sky.sun_azimuth_deg = 0.0f;  // north: straight ahead of a camera with yaw 0
+    s.sky.sun_elevation_deg = 10.0f;
+    const ViewParams camera{{0.0, 10.0, 0.0}, 5.0, 6.0, 60.0, 0.1, w, h};
+    const std::optional<glm::vec2> sun = sunScreenPosition(camera, sunDirection(s.sky));
+    REQUIRE(sun);
+    CHECK(sun->x < 0.5f);  // the camera turned right: the sun is left of the centre, above it
+    CHECK(sun->y > 0.5f);
+    const int cx = int(std::floor(sun->x * w)), cy = int(std::floor(sun->y * h));
+    const std::vector<float> image = uniform(w, h, 0.2f);
+    Bench plain;
+    Settings none;
+    none.postfx.order.clear();
+    const std::vector<float> reference = plain.chainRun(image, w, h, none);
+    const auto depthImage = [&](auto sky) {
+        std::vector<float> d(std::size_t(w * h));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) d[std::size_t(y * w + x)] = sky(x, y) ? 0.0f : 0.01f;
+        return d;
+    };
+    const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
+        bench.camera = camera;
+        return runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
+            return bench.chain.addPasses(g, rc, in, s, d);
+        });
+    };
+    // Samples 1 px and 2.9 px each side of the sun (3 deg at 55.4 px per radian): a sky edge
+    // through the sun leaves half of them in the sky, a corner a quarter.
+    const std::vector<std::pair<std::vector<float>, float>> cases = {
+        {depthImage([](int, int) { return true; }), 1.0f},
+        {depthImage([&](int x, int) { return x < cx; }), 0.5f},
+        {depthImage([&](int x, int y) { return x < cx && y < cy; }), 0.25f},
+        {depthImage([](int, int) { return false; }), 0.0f},
+    };
+    for (const auto& [depth, share] : cases) {
+        Bench bench;
+        std::vector<float> out = frame(bench, depth, 0.0);
+        REQUIRE(bench.chain.lensFlare());
+        CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.lens_flare.visibility", "postfx.lens_flare", "postfx.encode"});
+        const postfx::FlareVisibility v = bench.chain.lensFlare()->read();
+        CHECK(v.target == doctest::Approx(share));
+        CHECK(v.visibility == doctest::Approx(share));  // the first frame takes it at once
+        REQUIRE(allFinite(out));
+        if (share == 0.0f) CHECK(out == reference);  // hidden: nothing added
+        else CHECK(pixel(out, w, cx, cy) > pixel(reference, w, cx, cy) + 0.02f);
+    }
+
+    // The sun sinks behind a ridge: the visibility falls by exp(-rate * dt) per frame, no jump.
+    Bench fading;
+    frame(fading, cases[0].first, 0.0);
+    float previous = 1.0f;
+    for (int i = 1; i <= 10; ++i) {
+        frame(fading, cases[3].first, 0.05 * i);
+        const float v = fading.chain.lensFlare()->read().visibility;
+        CHECK(v == doctest::Approx(previous * std::exp(-8.0f * 0.05f)).epsilon(1e-4));
+        previous = v;
+    }
+
+    // Behind the camera, or below the horizon: no pass, the image unchanged.
+    s.sky.sun_azimuth_deg = 180.0f;
+    Bench behind;
+    CHECK(frame(behind, cases[0].first, 0.0) == reference);
+    CHECK_FALSE(has(behind.executed, "postfx.lens_flare"));
+    s.sky.sun_azimuth_deg = 0.0f;
+    s.sky.sun_elevation_deg = -2.0f;
+    CHECK_FALSE(sunScreenPosition(ViewParams{{0.0, 10.0, 0.0}, 0.0, -2.0, 60.0, 0.1, w, h}, sunDirection(s.sky)));
+    Bench below;
+    below.camera = ViewParams{{0.0, 10.0, 0.0}, 0.0, -2.0, 60.0, 0.1, w, h};
+    CHECK(frame(below, cases[0].first, 0.0) == reference);
+    CHECK_FALSE(has(below.executed, "postfx.lens_flare"));
+    s.lens_flare.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK(off.chain.lensFlare() == nullptr);
+}
+
+TEST_CASE("gl: film grain: zero-mean, strongest at mid-grey, none at black and white, the same for the same time") {
+    test::glContext();
+    const int w = 64, h = 32;
+    std::vector<float> image = uniform(w, h, 0.5f);
+    for (int y = 0; y < h; ++y) setPixel(image, w, 0, y, 0.0f), setPixel(image, w, 1, y, 1.0f);
+    GradeSettings g;
+    g.grain = 0.2f;
+    const auto grade = [&](double t) {
+        Bench bench;
+        return bench.run(image, w, h, t, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+            return addGradePass(graph, rc, in, g);
+        });
+    };
+    const std::vector<float> a = grade(1.0), same = grade(1.01), later = grade(1.5);
+    CHECK(a == same);  // the same pattern within 1/24 s
+    CHECK(a != later);
+    double sum = 0.0, largest = 0.0;
+    int n = 0;
+    for (int y = 0; y < h; ++y) {
+        CHECK(pixel(a, w, 0, y) == 0.0f);
+        CHECK(pixel(a, w, 1, y) == doctest::Approx(1.0f).epsilon(1e-6));
+        for (int x = 2; x < w; ++x) {
+            const double d = pixel(a, w, x, y) - 0.5;
+            sum += d, largest = std::max(largest, std::abs(d)), ++n;
+            CHECK(pixel(a, w, x, y, 0) == pixel(a, w, x, y, 1));  // grain in luminance, not colour
+        }
+    }
+    CHECK(std::abs(sum / n) < 0.005);   // zero mean (uniform in +-0.1)
+    CHECK(largest > 0.08);              // amplitude grain * 4 * 0.25 / 2 = 0.1 at mid-grey
+    CHECK(largest <= 0.1 + 1e-6);
+    CHECK(allFinite(a));
+}
+
+TEST_CASE("gl: night vision amplifies luminance into a green tint, darkens outside the scope, stays finite") {
+    test::glContext();
+    const int w = 64, h = 32;
+    std::vector<float> image = uniform(w, h, 0.02f);
+    setPixel(image, w, 28, 14, std::numeric_limits<float>::quiet_NaN());
+    Settings s;
+    s.postfx.order = {PostEffect::NightVision};
+    s.night_vision.enabled = true;
+    s.night_vision.noise = 0.0f;
+    Bench bench;
+    std::vector<float> out = bench.chainRun(image, w, h, s);
+    CHECK(postfxPasses(bench.executed) == std::vector<std::string>{"postfx.night_vision", "postfx.encode"});
+    REQUIRE(allFinite(out));
+    const float centre_g = pixel(out, w, w / 2, h / 2, 1);
+    CHECK(centre_g == doctest::Approx(srgb(0.02f * 6.0f)).epsilon(0.02));  // gain 6, green tint 1
+    CHECK(pixel(out, w, w / 2, h / 2, 0) < centre_g);
+    CHECK(pixel(out, w, w / 2, h / 2, 2) < centre_g);
+    CHECK(pixel(out, w, 0, 0, 1) == 0.0f);  // outside the scope circle
+    CHECK(pixel(out, w, 28, 14, 1) == 0.0f);  // NaN: black, and only there
+    CHECK(pixel(out, w, 29, 14, 1) == doctest::Approx(centre_g));
+    s.night_vision.noise = 0.2f;
+    Bench noisy;
+    out = noisy.chainRun(image, w, h, s, 2.0);
+    REQUIRE(allFinite(out));
+    CHECK(pixel(out, w, w / 2, h / 2, 1) != pixel(out, w, w / 2 + 1, h / 2, 1));
+    s.night_vision.enabled = false;
+    Bench off;
+    off.chainRun(image, w, h, s);
+    CHECK_FALSE(has(off.executed, "postfx.night_vision"));
+}
+
+TEST_CASE("gl: an identity 3D LUT changes nothing, an inverting one inverts") {
+    test::glContext();
+    const int w = 64, h = 36;
+    std::vector<float> image = uniform(w, h, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = (std::size_t(y) * w + std::size_t(x)) * 4;
+            image[i] = float(x) / float(w - 1), image[i + 1] = float(y) / float(h - 1), image[i + 2] = 0.3f;
+        }
+    const auto lutOf = [](int n, bool invert) {
+        CubeLut lut;
+        lut.size = n;
+        for (int b = 0; b < n; ++b)
+            for (int g = 0; g < n; ++g)
+                for (int r = 0; r < n; ++r) {
+                    const glm::vec3 c = glm::vec3(r, g, b) / float(n - 1);
+                    lut.table.push_back(invert ? 1.0f - c : c);
+                }
+        return lut;
+    };
+    GradeSettings g;
+    const auto grade = [&](const CubeLut* cube) {
+        gl::Texture texture;
+        GradeLut l;
+        if (cube) texture = uploadCube(*cube, "test lut"), l = {texture.id(), cube->size, cube->domain_min, cube->domain_max};
+        Bench bench;
+        return bench.run(image, w, h, 0.0, [&](FrameGraph& graph, const RenderContext& rc, TextureHandle in) {
+            return addGradePass(graph, rc, in, g, cube ? &l : nullptr);
+        });
+    };
+    const std::vector<float> plain = grade(nullptr);
+    const CubeLut identity = lutOf(17, false), inverse = lutOf(17, true);
+    std::vector<float> out = grade(&identity);
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < out.size(); ++i) largest = std::max(largest, std::abs(out[i] - plain[i]));
+    CHECK(largest < 1e-3f);  // filtering weights have 8 bits on llvmpipe
+    out = grade(&inverse);
+    CHECK(pixel(out, w, 10, 20, 0) == doctest::Approx(1.0f - 10.0f / 63.0f).epsilon(1e-3));
+    CHECK(pixel(out, w, 10, 20, 2) == doctest::Approx(0.7f).epsilon(1e-3));
 }

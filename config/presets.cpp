@@ -1,0 +1,47 @@
+// The post chain's knobs per preset. High is the shipped default (Settings{}), so a scene
+// without a preset looks the same; Reference is everything at its maximum.
+#include "config/presets.h"
+
+#include <array>
+
+namespace vista {
+
+namespace {
+
+struct PostKnobs {
+    int ssao_directions, ssao_steps;
+    bool ssao_half;
+    int bloom_levels, dof_samples, motion_blur_samples;
+};
+
+constexpr std::array<PostKnobs, 5> kPost{{
+    {2, 3, true, 3, 12, 6},      // low
+    {3, 4, true, 4, 20, 8},      // medium
+    {4, 4, true, 5, 32, 12},     // high (the defaults)
+    {8, 8, false, 6, 64, 24},    // ultra
+    {16, 32, false, 10, 256, 64} // reference: the ranges' maxima
+}};
+
+constexpr std::array<const char*, 5> kNames{"low", "medium", "high", "ultra", "reference"};
+
+}  // namespace
+
+void applyQualityPreset(Settings& s, QualityPreset preset) {
+    const PostKnobs& k = kPost[std::size_t(preset)];
+    s.ssao.directions = k.ssao_directions;
+    s.ssao.steps = k.ssao_steps;
+    s.ssao.half_resolution = k.ssao_half;
+    s.bloom.levels = k.bloom_levels;
+    s.dof.samples = k.dof_samples;
+    s.motion_blur.samples = k.motion_blur_samples;
+}
+
+std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {
+    for (std::size_t i = 0; i < kNames.size(); ++i)
+        if (name == kNames[i]) return QualityPreset(i);
+    return std::nullopt;
+}
+
+const char* qualityPresetName(QualityPreset preset) { return kNames[std::size_t(preset)]; }
+
+}  // namespace vista

@@ -1,0 +1,38 @@
+// Quality presets: every preset is a valid scene (the describe() ranges, through the writer and
+// the loader), High is the default, and sample counts never fall from one level to the next.
+#include "config/ini.h"
+#include "config/presets.h"
+
+#include <doctest/doctest.h>
+
+using namespace vista;
+
+TEST_CASE("presets: each is valid, high is the default, and the quality knobs grow with the level") {
+    const QualityPreset levels[] = {QualityPreset::Low, QualityPreset::Medium, QualityPreset::High,
+                                    QualityPreset::Ultra, QualityPreset::Reference};
+    Settings previous;
+    for (std::size_t i = 0; i < std::size(levels); ++i) {
+        Settings s;
+        applyQualityPreset(s, levels[i]);
+        INFO(qualityPresetName(levels[i]));
+        Settings back;
+        CHECK(loadIniString(saveIniString(s), "preset.ini", back).empty());  // within every range
+        CHECK(qualityPresetFromName(qualityPresetName(levels[i])) == levels[i]);
+        if (i > 0) {
+            CHECK(s.ssao.directions >= previous.ssao.directions);
+            CHECK(s.ssao.steps >= previous.ssao.steps);
+            CHECK((!s.ssao.half_resolution || previous.ssao.half_resolution));
+            CHECK(s.bloom.levels >= previous.bloom.levels);
+            CHECK(s.dof.samples >= previous.dof.samples);
+            CHECK(s.motion_blur.samples >= previous.motion_blur.samples);
+            CHECK(s.dof.samples + s.motion_blur.samples + s.ssao.directions * s.ssao.steps >
+                  previous.dof.samples + previous.motion_blur.samples + previous.ssao.directions * previous.ssao.steps);
+        }
+        previous = s;
+    }
+    Settings high;
+    applyQualityPreset(high, QualityPreset::High);
+    Settings defaults;
+    CHECK(saveIniString(high) == saveIniString(defaults));
+    CHECK_FALSE(qualityPresetFromName("extreme"));
+}
