@@ -25,6 +25,8 @@ TEST_CASE("presets: each is valid, high is the default, and the quality knobs gr
             CHECK(s.bloom.levels >= previous.bloom.levels);
             CHECK(s.dof.samples >= previous.dof.samples);
             CHECK(s.motion_blur.samples >= previous.motion_blur.samples);
+            CHECK(s.shadows.resolution >= previous.shadows.resolution);
+            CHECK(s.shadows.pcf_taps >= previous.shadows.pcf_taps);
             CHECK(s.dof.samples + s.motion_blur.samples + s.ssao.directions * s.ssao.steps >
                   previous.dof.samples + previous.motion_blur.samples + previous.ssao.directions * previous.ssao.steps);
         }
