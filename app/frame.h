@@ -13,6 +13,7 @@
 #include "lighting/local_lights.h"
 #include "postfx/chain.h"
 #include "sky/atmosphere.h"
+#include "sky/clouds.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
 
@@ -62,6 +63,7 @@ public:
     InputErrors prepare(const Settings& settings);
     Terrain* terrain() { return terrain_.get(); }
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
+    Clouds* clouds() { return clouds_.get(); }   // null unless the last frame drew clouds
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
@@ -93,6 +95,7 @@ private:
     std::uint64_t frame_ = 0;
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
+    std::unique_ptr<Clouds> clouds_;      // null while [clouds] draws nothing
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)

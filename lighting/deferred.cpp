@@ -2,6 +2,7 @@
 #include "lighting/deferred.h"
 
 #include "renderer/bindings.h"
+#include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/common.hpp>
 
@@ -25,7 +26,7 @@ std::vector<std::string> lightingPrograms() {
 
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets) {
     struct Data {
-        TextureHandle depth, albedo, normal, ao, hdr;
+        TextureHandle depth, albedo, normal, ao, cloud_shadow, hdr;
     };
     const Data& d = graph.addPass<Data>("lighting.sun",
         [&](PassBuilder& b, Data& data) {
@@ -33,15 +34,21 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
             if (targets.ao.valid()) data.ao = b.read(targets.ao);
+            if (targets.cloud_shadow.valid()) data.cloud_shadow = b.read(targets.cloud_shadow);
             data.hdr = b.write(targets.hdr);
         },
         [&rc, light](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            const std::vector<std::string> defines = data.ao.valid() ? std::vector<std::string>{"HAS_AO"}
-                                                                     : std::vector<std::string>{};
+            std::vector<std::string> defines = data.ao.valid() ? std::vector<std::string>{"HAS_AO"}
+                                                               : std::vector<std::string>{};
+            if (data.cloud_shadow.valid()) defines.push_back("HAS_CLOUD_SHADOW");
             glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl", defines)->id());
             if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
+            if (data.cloud_shadow.valid()) {
+                glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));
+                glUniform4fv(8, 1, &light.cloud_shadow_map.x);
+            }
             glUniform3fv(0, 1, &light.sun_irradiance.x);
             glUniform3fv(1, 1, &light.sky_up.x);
             glUniform3fv(2, 1, &light.ground_up.x);

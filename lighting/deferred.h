@@ -20,6 +20,8 @@ struct SunAndSky {
     glm::vec3 sun_irradiance{0.0f};  // the sun's irradiance on a surface facing it
     glm::vec3 sky_up{0.0f};          // sky irradiance on an upward-facing surface
     glm::vec3 ground_up{0.0f};       // irradiance from the ground on a downward-facing surface
+    //! With targets.cloud_shadow: where its map lies (sky/clouds.h Clouds::addShadowPass()).
+    glm::vec4 cloud_shadow_map{0.0f};
 };
 
 // From the atmosphere (sky/sky_lighting.h): the sun's irradiance after transmittance, the sky's
@@ -30,7 +32,8 @@ SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings);
 // Every program the lighting uses (for FrameRenderer::allPrograms()).
 std::vector<std::string> lightingPrograms();
 
-// Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO);
+// Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO)
+// and the sun's direct light by targets.cloud_shadow when valid (HAS_CLOUD_SHADOW);
 // writes (adds to) targets.hdr.
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets);
 

@@ -15,6 +15,16 @@ layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from belo
 #ifdef HAS_AO
 layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r), 1 = open
 #endif
+#ifdef HAS_CLOUD_SHADOW
+#include "../../sky/shaders/sky_bindings.glsl"
+layout(binding = SKY_TEX_CLOUD_SHADOW) uniform sampler2D u_cloud_shadow;  // sun transmittance through the clouds
+layout(location = 8) uniform vec4 u_cloud_shadow_map;  // xy centre minus camera (x/z m), z 1/extent, w max(sun y, 0.05)
+// The map's texel for a point: its projection along the sun onto y = 0 (sky/shaders/cloud_shadow.glsl).
+float cloudShadow(vec3 pos) {
+    vec2 ref = pos.xz - u_sun_dir.xz / u_cloud_shadow_map.w * (u_camera_world.y + pos.y);
+    return clamp(texture(u_cloud_shadow, (ref - u_cloud_shadow_map.xy) * u_cloud_shadow_map.z + 0.5).r, 0.0, 1.0);
+}
+#endif
 layout(location = 0) out vec4 o_color;
 
 // Hemisphere ambient: irradiance on a surface facing n.
@@ -31,6 +41,9 @@ void main() {
     vec3 v = safeNormalize(-pos);
     vec3 l = u_sun_dir.xyz;
     vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * max(dot(s.normal, l), 0.0);
+#ifdef HAS_CLOUD_SHADOW
+    color *= cloudShadow(pos);
+#endif
     // Ambient: Lambert on the hemisphere irradiance, and a rough specular term from the
     // irradiance around the mirror direction (Fresnel at the view angle, damped by roughness).
     float nv = clamp(dot(s.normal, v), 0.0, 1.0);
