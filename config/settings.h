@@ -164,7 +164,7 @@ struct CloudLayerSettings {
     float base_m = 1500.0f;          //!< m, altitude of the shell's bottom above sea level (y = 0), 0..100000
     float thickness_m = 1200.0f;     //!< m, shell thickness, 1..20000
     float coverage = 0.45f;          //!< share of the sky covered (threshold on the noise), 0..1
-    float density = 0.04f;           //!< 1/m, extinction inside a cloud's core, 0..10
+    float density = 0.02f;           //!< 1/m, extinction inside a cloud's core, 0..10
     float scale_m = 2500.0f;         //!< m, size of the coarsest noise cell, 10..1e6
     int octaves = 4;                 //!< fBm octaves (frequency x2, amplitude x1/2 each), 1..8
     int steps = 8;                   //!< view-ray samples through the shell, 1..64

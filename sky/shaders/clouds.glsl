@@ -26,7 +26,8 @@ float hgPhase(float c, float g) {
     return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));
 }
 
-float pixelHash(vec2 p) {
+// A per-pixel random start offset: the march's banding becomes fine grain.
+float pixelJitter(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
     p3 += dot(p3, p3.yzx + 33.33);
     return fract((p3.x + p3.y) * p3.z);
@@ -83,7 +84,7 @@ void main() {
     float nu = dot(dir, sun);
     float g = c_planet.w;
     float phase = mix(hgPhase(nu, g), hgPhase(nu, -0.3), 0.25);
-    float jitter = pixelHash(gl_FragCoord.xy);
+    float jitter = pixelJitter(gl_FragCoord.xy);
     float fade_start = 0.6 * c_planet.z;
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0, weight = 0.0, t_weighted = 0.0;
@@ -115,7 +116,7 @@ void main() {
                 }
             // Beer's law for the direct light, plus a softer, less forward term for the light
             // scattered more than once (it reaches deeper into the cloud).
-            vec3 j_sun = sun_light * (phase * exp(-tau) + 0.35 / (4.0 * PI) * exp(-0.25 * tau));
+            vec3 j_sun = sun_light * (phase * exp(-tau) + 0.5 / (4.0 * PI) * exp(-0.1 * tau));
             vec3 j_amb = c_ambient.rgb * mix(0.45, 1.0, clamp(h01, 0.0, 1.0));
             float e = exp(-sigma * dt);
             float absorbed = transmittance * (1.0 - e);
