@@ -89,6 +89,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
     base.sky.sun_azimuth_deg = 180.0f;
     base.sky.moon = false;  // the reference has neither moon nor stars
     base.sky.stars = false;
+    base.clouds.enabled = false;  // nor clouds
 
     std::fprintf(stderr, "bench sky: building the CPU reference...\n");
     const MultipleScatteringTable table(atmosphereParams(base.sky));
