@@ -19,10 +19,13 @@ layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r
 #include "../../sky/shaders/sky_bindings.glsl"
 layout(binding = SKY_TEX_CLOUD_SHADOW) uniform sampler2D u_cloud_shadow;  // sun transmittance through the clouds
 layout(location = 8) uniform vec4 u_cloud_shadow_map;  // xy centre minus camera (x/z m), z 1/extent, w max(sun y, 0.05)
-// The map's texel for a point: its projection along the sun onto y = 0 (sky/shaders/cloud_shadow.glsl).
+// The map's texel for a point: its projection along the sun onto y = 0 (sky/shaders/cloud_shadow.glsl);
+// towards the map's edge the shadow fades out (no streaks of edge texels beyond it).
 float cloudShadow(vec3 pos) {
     vec2 ref = pos.xz - u_sun_dir.xz / u_cloud_shadow_map.w * (u_camera_world.y + pos.y);
-    return clamp(texture(u_cloud_shadow, (ref - u_cloud_shadow_map.xy) * u_cloud_shadow_map.z + 0.5).r, 0.0, 1.0);
+    vec2 uv = (ref - u_cloud_shadow_map.xy) * u_cloud_shadow_map.z + 0.5;
+    float edge = smoothstep(0.9, 1.0, 2.0 * max(abs(uv.x - 0.5), abs(uv.y - 0.5)));
+    return mix(clamp(texture(u_cloud_shadow, uv).r, 0.0, 1.0), 1.0, edge);
 }
 #endif
 layout(location = 0) out vec4 o_color;
