@@ -31,7 +31,7 @@ std::vector<ProgramKey> allPrograms() {
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
     programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO"}});
-    for (const auto& file : cloudPrograms()) programs.push_back({file, {}});
+    for (auto& [file, defines] : cloudPrograms()) programs.push_back({file, defines});
     programs.push_back({"lighting/shaders/sun.glsl", {"HAS_CLOUD_SHADOW"}});
     programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW"}});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {

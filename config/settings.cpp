@@ -168,6 +168,7 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
     v.field({"phase_g", "", "forward-scattering asymmetry (Henyey-Greenstein g)"}, s.phase_g, 0.0f, 0.95f);
     v.field({"ambient", "", "scale of the sky's ambient light on the clouds"}, s.ambient, 0.0f, 10.0f);
     v.field({"max_distance_km", "km", "clouds fade out towards this distance along the view"}, s.max_distance_km, 1.0f, 2000.0f);
+    v.field({"half_resolution", "", "march at half size, upsampled over the image (clouds.composite)"}, s.half_resolution);
     v.field({"coverage_variation", "", "every layer's coverage swings by +- this over coverage_period_s"}, s.coverage_variation, 0.0f, 1.0f);
     v.field({"coverage_period_s", "s", "period of the coverage swing"}, s.coverage_period_s, 1.0f, 1.0e7f);
     v.field({"shadows", "", "cloud shadows on the terrain (clouds.shadow)"}, s.shadows);

@@ -25,7 +25,10 @@ struct Clouds::Gpu {
     glm::vec4 planet, ambient, shadow, sun;
 };
 
-std::vector<std::string> cloudPrograms() { return {"sky/shaders/clouds.glsl", "sky/shaders/cloud_shadow.glsl"}; }
+std::vector<ProgramKeyText> cloudPrograms() {
+    return {{"sky/shaders/clouds.glsl", {}}, {"sky/shaders/clouds.glsl", {"HALF_RES"}},
+            {"sky/shaders/clouds_composite.glsl", {}}, {"sky/shaders/cloud_shadow.glsl", {}}};
+}
 
 Clouds::Clouds() : uniforms_(gl::Buffer::create(sizeof(Gpu), nullptr, GL_DYNAMIC_STORAGE_BIT, "cloud uniforms")) {}
 
@@ -61,6 +64,7 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     g.shadow = glm::vec4(float(rel.x), float(rel.y), float(extent), float(altitude));
     g.sun = glm::vec4(glm::vec3(sun), float(slant));
     shadow_size_ = clouds.shadow_size;
+    half_resolution_ = clouds.half_resolution;
     shadow_map_ = glm::vec4(float(rel.x), float(rel.y), float(1.0 / extent), float(slant));
     // Written while the graph is built: both passes of this frame read the same block.
     glNamedBufferSubData(uniforms_.id(), 0, sizeof g, &g);
@@ -96,30 +100,75 @@ TextureHandle Clouds::addShadowPass(FrameGraph& graph, const RenderContext& rc, 
 
 void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets) {
     struct Data {
-        TextureHandle hdr, depth, transmittance;
+        TextureHandle out, depth, transmittance;
     };
     const TextureHandle transmittance = sky.frameTransmittance();
+    const bool half = half_resolution_;
     const Data& d = graph.addPass<Data>("clouds.shell",
         [&](PassBuilder& b, Data& data) {
             data.transmittance = b.read(transmittance);
             data.depth = b.read(targets.depth);
-            data.hdr = b.write(targets.hdr);
+            if (half) {
+                const TextureDesc desc{(rc.view.width + 1) / 2, (rc.view.height + 1) / 2, PixelFormat::RGBA16F};
+                data.out = b.write(b.create("clouds.half", desc));
+            } else {
+                data.out = b.write(targets.hdr);
+            }
         },
-        [this, &rc, &sky](const Data& data, PassContext& ctx) {
+        [this, &rc, &sky, half](const Data& data, PassContext& ctx) {
             bind();
             sky.bindFrameUniforms();
-            const TextureDesc& desc = ctx.desc(data.hdr);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("sky/shaders/clouds.glsl")->id());
+            const TextureDesc& desc = ctx.desc(data.out);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
+            if (half) {
+                glClearColor(0, 0, 0, 0);
+                glClear(GL_COLOR_BUFFER_BIT);
+            }
+            glUseProgram(rc.shaders.get("sky/shaders/clouds.glsl", half ? std::vector<std::string>{"HALF_RES"}
+                                                                        : std::vector<std::string>{})->id());
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.depth));
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied: hdr = clouds + hdr * (1 - a)
+            if (!half) {
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied: hdr = clouds + hdr * (1 - a)
+            }
             drawFullscreen(rc);
             glDisable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ZERO);
         });
-    targets.hdr = d.hdr;
+    if (!half) {
+        targets.hdr = d.out;
+        return;
+    }
+    struct Composite {
+        TextureHandle clouds, depth, hdr;
+    };
+    const TextureHandle clouds = d.out;
+    const Composite& c = graph.addPass<Composite>("clouds.composite",
+        [&](PassBuilder& b, Composite& data) {
+            data.clouds = b.read(clouds);
+            data.depth = b.read(targets.depth);
+            data.hdr = b.write(targets.hdr);
+        },
+        [this, &rc](const Composite& data, PassContext& ctx) {
+            bind();
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
+            glUseProgram(rc.shaders.get("sky/shaders/clouds_composite.glsl")->id());
+            const GLuint tex = ctx.texture(data.clouds);
+            glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glBindTextureUnit(binding::kTex0, tex);
+            glBindTextureUnit(binding::kTex1, ctx.texture(data.depth));
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            drawFullscreen(rc);
+            glDisable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ZERO);
+        });
+    targets.hdr = c.hdr;
 }
 
 }  // namespace vista

@@ -13,14 +13,16 @@
 #include <glm/vec4.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vista {
 
 class SkyAtmosphere;
 
-// Every program the clouds use (for FrameRenderer::allPrograms()).
-std::vector<std::string> cloudPrograms();
+// Every program the clouds use, with its defines (for FrameRenderer::allPrograms()).
+using ProgramKeyText = std::pair<std::string, std::vector<std::string>>;
+std::vector<ProgramKeyText> cloudPrograms();
 
 class Clouds {
 public:
@@ -34,7 +36,8 @@ public:
     // map: what lighting.sun needs to sample it (xy its centre minus the camera, world x/z m,
     // z 1 / extent (1/m), w the sun's slant max(sun y, 0.05)).
     TextureHandle addShadowPass(FrameGraph& graph, const RenderContext& rc, glm::vec4& map);
-    // "clouds.shell": the layers over targets.hdr (after "sky.atmosphere"), cut at targets.depth.
+    // "clouds.shell": the layers over targets.hdr (after "sky.atmosphere"), cut at targets.depth;
+    // with half_resolution into a half-size "clouds.half" that "clouds.composite" upsamples.
     void addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets);
 
 private:
@@ -43,6 +46,7 @@ private:
 
     gl::Buffer uniforms_;
     int shadow_size_ = 256;
+    bool half_resolution_ = true;
     glm::vec4 shadow_map_{0.0f};
 };
 

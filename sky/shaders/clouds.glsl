@@ -7,7 +7,8 @@
 // the sun for self-shadowing) and the sky's ambient light. The result fades into the aerial
 // perspective by the atmosphere's transmittance from the camera to the clouds: the sky already
 // in the image stands for the haze in front of them. Output: premultiplied radiance and
-// coverage, blended as hdr = rgb + hdr * (1 - a).
+// coverage, blended as hdr = rgb + hdr * (1 - a); with HALF_RES into a half-size target that
+// clouds_composite.glsl blends over the image.
 #include "../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -60,7 +61,16 @@ void main() {
     vec3 sun = a_sun.xyz;
     float rc = c_planet.y, mu = clamp(dir.y, -1.0, 1.0);
     float t_scene = 1e30;
+#ifdef HALF_RES
+    // One texel for 2x2 pixels: cut at the farthest of them (clouds.composite hides the clouds
+    // behind nearer geometry per pixel).
+    ivec2 full = textureSize(u_depth, 0) - 1;
+    ivec2 q = ivec2(gl_FragCoord.xy) * 2;
+    float depth = min(min(texelFetch(u_depth, min(q, full), 0).r, texelFetch(u_depth, min(q + ivec2(1, 0), full), 0).r),
+                      min(texelFetch(u_depth, min(q + ivec2(0, 1), full), 0).r, texelFetch(u_depth, min(q + 1, full), 0).r));
+#else
     float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+#endif
     if (depth > 0.0) t_scene = length(positionFromDepth(v_uv, depth));
 
     // The layers' stretches, nearest first.
