@@ -8,8 +8,10 @@
 #include "app/scene.h"
 #include "app/stats.h"
 #include "sky/atmosphere.h"
+#include "sky/cloud_model.h"
 #include "sky/sky_reference_image.h"
 
+#include <glm/gtc/packing.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -83,6 +85,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
     base.sky.sun_azimuth_deg = 180.0f;
     base.sky.moon = false;  // the reference has neither moon nor stars
     base.sky.stars = false;
+    base.clouds.enabled = false;  // nor clouds
 
     std::fprintf(stderr, "bench sky: building the CPU reference...\n");
     const MultipleScatteringTable table(atmosphereParams(base.sky));
@@ -158,6 +161,48 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
             {"sky_with_view_copies", copy_ms > 0 ? with_view / copy_ms : 0.0},
         });
     }
+    // Clouds: the cost of clouds.shell and its error against a fine setting (lower layer 6
+    // octaves, 32 steps; 8 light samples) for the lower layer's octaves and steps, looking up
+    // with the sun behind the camera. The error includes the jitter's grain.
+    nlohmann::json cloud_rows = nlohmann::json::array();
+    Settings clouds = scene;
+    clouds.terrain.enabled = false;
+    clouds.debug.grid = false;
+    clouds.sky.enabled = true;
+    clouds.sky.sun_mode = SunMode::Angles;
+    clouds.sky.sun_azimuth_deg = 180.0f;
+    clouds.sky.sun_elevation_deg = 25.0f;
+    clouds.clouds.enabled = true;
+    if (cloudsActive(clouds.clouds)) {
+        const ViewParams up{{0.0, 2.0, 0.0}, 0.0, 25.0, 60.0, 0.5, o.width, o.height};
+        std::vector<std::uint16_t> hdr;
+        FrameRequest request;
+        request.capture_hdr = &hdr;
+        Settings fine = clouds;
+        fine.clouds.low.octaves = 6;
+        fine.clouds.low.steps = 32;
+        fine.clouds.light_samples = 8;
+        renderer.render(fine, up, 0.0, request);
+        std::vector<glm::vec3> reference(hdr.size() / 4);
+        for (std::size_t i = 0; i < reference.size(); ++i)
+            for (int c = 0; c < 3; ++c) reference[i][c] = glm::unpackHalf1x16(hdr[i * 4 + std::size_t(c)]);
+        std::printf("%-8s %-8s %9s %12s\n", "octaves", "steps", "psnr_dB", "shell_copies");
+        for (int octaves : {2, 3, 4, 6})
+            for (int steps : {4, 8, 16}) {
+                Settings c = clouds;
+                c.clouds.low.octaves = octaves;
+                c.clouds.low.steps = steps;
+                std::vector<double> shell_ms;
+                for (int r = 0; r < 4; ++r) {
+                    renderer.render(c, up, 0.0, request);
+                    const double ms = passMs(renderer.timers().collect(true).back(), "clouds.shell");
+                    if (r > 0) shell_ms.push_back(ms);  // the first frame compiles (JIT on llvmpipe)
+                }
+                const double db = skyPsnrDb(hdr, reference), copies = copy_ms > 0 ? median(shell_ms) / copy_ms : 0.0;
+                std::printf("%-8d %-8d %9.1f %12.2f\n", octaves, steps, db, copies);
+                cloud_rows.push_back({{"octaves", octaves}, {"steps", steps}, {"psnr_db", db}, {"shell_copies", copies}});
+            }
+    }
     nlohmann::json out = {
         {"renderer", context->renderer()},
         {"backend", backendName(o.backend)},
@@ -166,6 +211,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
         {"psnr_definition", "10 log10(1 / mean(((gpu - ref) / max(ref))^2)), linear radiance, RGB, sun disk masked"},
         {"reference_copy_ms", copy_ms},
         {"presets", presets},
+        {"clouds", cloud_rows},
     };
     std::printf("reference_copy_ms %.4f\n", copy_ms);
     return writeBenchJson(o.json, out.dump(2) + "\n");

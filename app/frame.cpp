@@ -12,6 +12,8 @@
 #include "lighting/deferred.h"
 #include "lighting/local_lights.h"
 #include "sky/atmosphere.h"
+#include "sky/cloud_model.h"
+#include "sky/clouds.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -35,6 +37,12 @@ std::vector<ProgramKey> allPrograms() {
     programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
     programs.push_back({"lighting/shaders/sun.glsl", {"SHADOW_TERM_VIEW"}});
     for (auto& [file, defines] : shadowPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : cloudPrograms()) programs.push_back({file, defines});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_CLOUD_SHADOW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
+    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
         programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
@@ -270,10 +278,22 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     } else {
         grass_.reset();  // a disabled feature keeps nothing allocated
     }
+    // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
+    const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
+    if (clouds) {
+        if (!clouds_) clouds_ = std::make_unique<Clouds>();
+        report.counters["clouds.layers"] =
+            double(clouds_->prepare(rc, s.clouds, s.sky, sky_lighting_.get(s.sky, view.position).sky_irradiance_up));
+    } else {
+        clouds_.reset();
+    }
     if (scene.albedo.valid()) {
         const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
         if (s.ssao.enabled) scene.ao = addSsaoPasses(graph, rc, scene, s.ssao);
-        addSunLightingPass(graph, rc, sunAndSky(sky, s.sky), scene, shadows, s.debug.view);
+        SunAndSky light = sunAndSky(sky, s.sky);
+        const bool sunlit = sky.sun_illuminance.x + sky.sun_illuminance.y + sky.sun_illuminance.z > 0.0;
+        if (clouds && s.clouds.shadows && sunlit) scene.cloud_shadow = clouds_->addShadowPass(graph, rc, light.cloud_shadow_map);
+        addSunLightingPass(graph, rc, light, scene, shadows, s.debug.view);
         if (!shadow_view) addLocalLightPasses(graph, rc, s, request, scene, report);
     } else {
         local_lights_.reset();
@@ -284,6 +304,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     } else if (s.sky.enabled) {
         if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
         sky_->addPasses(graph, rc, s.sky, scene);
+        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
     } else {
         sky_.reset();  // a disabled feature keeps nothing allocated
     }

@@ -15,6 +15,7 @@
 #include "postfx/chain.h"
 #include "shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
+#include "sky/clouds.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
 
@@ -66,6 +67,7 @@ public:
     InputErrors prepare(const Settings& settings);
     Terrain* terrain() { return terrain_.get(); }
     SkyAtmosphere* sky() { return sky_.get(); }  // null until a frame with [sky] enabled
+    Clouds* clouds() { return clouds_.get(); }   // null unless the last frame drew clouds
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
@@ -104,6 +106,7 @@ private:
     std::uint64_t frame_ = 0;
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
+    std::unique_ptr<Clouds> clouds_;      // null while [clouds] draws nothing
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)

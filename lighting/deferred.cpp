@@ -2,6 +2,7 @@
 #include "lighting/deferred.h"
 
 #include "renderer/bindings.h"
+#include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/common.hpp>
 
@@ -26,7 +27,7 @@ std::vector<std::string> lightingPrograms() {
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
                         const SunShadowInput& shadows, DebugView debug) {
     struct Data {
-        TextureHandle depth, albedo, normal, ao, hdr, shadow;
+        TextureHandle depth, albedo, normal, ao, cloud_shadow, hdr, shadow;
     };
     const Data& d = graph.addPass<Data>("lighting.sun",
         [&](PassBuilder& b, Data& data) {
@@ -34,6 +35,7 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
             if (targets.ao.valid()) data.ao = b.read(targets.ao);
+            if (targets.cloud_shadow.valid()) data.cloud_shadow = b.read(targets.cloud_shadow);
             if (shadows.valid()) data.shadow = b.read(shadows.map);
             data.hdr = b.write(targets.hdr);
         },
@@ -42,6 +44,7 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (data.ao.valid()) defines.push_back("HAS_AO");
+            if (data.cloud_shadow.valid()) defines.push_back("HAS_CLOUD_SHADOW");
             if (data.shadow.valid()) {
                 defines.push_back("HAS_SUN_SHADOW");
                 if (debug == DebugView::Cascades) defines.push_back("SHADOW_CASCADE_VIEW");
@@ -54,6 +57,10 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             if (debug == DebugView::Shadow) defines.push_back("SHADOW_TERM_VIEW");
             glUseProgram(rc.shaders.get("lighting/shaders/sun.glsl", defines)->id());
             if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
+            if (data.cloud_shadow.valid()) {
+                glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));
+                glUniform4fv(8, 1, &light.cloud_shadow_map.x);
+            }
             glUniform3fv(0, 1, &light.sun_irradiance.x);
             glUniform3fv(1, 1, &light.sky_up.x);
             glUniform3fv(2, 1, &light.ground_up.x);

@@ -21,6 +21,8 @@ struct SunAndSky {
     glm::vec3 sun_irradiance{0.0f};  // the sun's irradiance on a surface facing it
     glm::vec3 sky_up{0.0f};          // sky irradiance on an upward-facing surface
     glm::vec3 ground_up{0.0f};       // irradiance from the ground on a downward-facing surface
+    //! With targets.cloud_shadow: where its map lies (sky/clouds.h Clouds::addShadowPass()).
+    glm::vec4 cloud_shadow_map{0.0f};
 };
 
 // From the atmosphere (sky/sky_lighting.h): the sun's irradiance after transmittance, the sky's
@@ -32,8 +34,9 @@ SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings);
 std::vector<std::string> lightingPrograms();
 
 // Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO)
-// and the sun by the cascaded shadows when `shadows` is valid (cascade_view: tints each pixel by its
-// cascade, [debug] view = cascades); writes (adds to) targets.hdr.
+// and the sun's direct light by targets.cloud_shadow when valid (HAS_CLOUD_SHADOW) and by the
+// cascaded shadows when `shadows` is valid (debug: [debug] view = cascades tints each pixel by its
+// cascade, shadow writes the cascades' visibility alone); writes (adds to) targets.hdr.
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
                         const SunShadowInput& shadows = {}, DebugView debug = DebugView::Final);
 

@@ -140,7 +140,12 @@ std::vector<std::string> skyPrograms() {
 }
 
 SkyAtmosphere::SkyAtmosphere()
-    : uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky atmosphere uniforms")) {}
+    : uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky atmosphere uniforms")),
+      frame_uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky frame uniforms")) {}
+
+void SkyAtmosphere::bindFrameUniforms() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, frame_uniforms_.id());
+}
 
 void SkyAtmosphere::invalidate() {
     atmosphere_valid_ = false;
@@ -280,6 +285,9 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
                                view_key_ = view_key;
                            });
     }
+
+    glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
+    frame_transmittance_ = transmittance;
 
     if (sky.aerial_perspective && targets.depth.valid())
         addAerialPasses(graph, rc, u, in_space, transmittance, multiscatter, targets);

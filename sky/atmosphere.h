@@ -60,6 +60,10 @@ public:
     GLuint transmittanceTexture() const { return transmittance_.id(); }
     GLuint multiscatterTexture() const { return multiscatter_.id(); }
     GLuint skyViewTexture() const { return sky_view_.id(); }
+    // For passes added after addPasses() in the same graph (clouds.shell): this frame's
+    // transmittance LUT, and its atmosphere block bound at SKY_BINDING_ATMOSPHERE.
+    TextureHandle frameTransmittance() const { return frame_transmittance_; }
+    void bindFrameUniforms() const;
 
 private:
     struct Uniforms;
@@ -69,6 +73,8 @@ private:
     void upload(const Uniforms& u);
 
     gl::Buffer uniforms_;
+    gl::Buffer frame_uniforms_;  // this frame's block, written while the graph is built
+    TextureHandle frame_transmittance_;
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for
     std::vector<float> view_key_;        // size and steps of the sky-view LUT

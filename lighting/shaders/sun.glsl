@@ -15,6 +15,19 @@ layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from belo
 #ifdef HAS_AO
 layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r), 1 = open
 #endif
+#ifdef HAS_CLOUD_SHADOW
+#include "../../sky/shaders/sky_bindings.glsl"
+layout(binding = SKY_TEX_CLOUD_SHADOW) uniform sampler2D u_cloud_shadow;  // sun transmittance through the clouds
+layout(location = 8) uniform vec4 u_cloud_shadow_map;  // xy centre minus camera (x/z m), z 1/extent, w max(sun y, 0.05)
+// The map's texel for a point: its projection along the sun onto y = 0 (sky/shaders/cloud_shadow.glsl);
+// towards the map's edge the shadow fades out (no streaks of edge texels beyond it).
+float cloudShadow(vec3 pos) {
+    vec2 ref = pos.xz - u_sun_dir.xz / u_cloud_shadow_map.w * (u_camera_world.y + pos.y);
+    vec2 uv = (ref - u_cloud_shadow_map.xy) * u_cloud_shadow_map.z + 0.5;
+    float edge = smoothstep(0.9, 1.0, 2.0 * max(abs(uv.x - 0.5), abs(uv.y - 0.5)));
+    return mix(clamp(texture(u_cloud_shadow, uv).r, 0.0, 1.0), 1.0, edge);
+}
+#endif
 #if defined(HAS_SUN_SHADOW) || defined(SHADOW_CASCADE_VIEW)
 #include "../../shadows/shaders/shadows.glsl"
 #endif
@@ -39,6 +52,9 @@ void main() {
         float shadow = 1.0;
 #ifdef HAS_SUN_SHADOW
         shadow = sunShadow(pos, s.normal, ndotl, linearDepth(depth), gl_FragCoord.xy);
+#endif
+#ifdef HAS_CLOUD_SHADOW
+        shadow *= cloudShadow(pos);
 #endif
         color = evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * u_sun_irradiance * (ndotl * shadow);
     }

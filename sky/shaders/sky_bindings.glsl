@@ -2,3 +2,5 @@
 // this file) and GLSL. Only #defines and // comments.
 #define SKY_BINDING_ATMOSPHERE 1
 #define SKY_IMAGE_AERIAL_TRANSMITTANCE 1
+#define SKY_BINDING_CLOUDS 2
+#define SKY_TEX_CLOUD_SHADOW 7

@@ -36,6 +36,7 @@ Settings skyOnly(float sun_elevation_deg, float sun_azimuth_deg = 180.0f) {
     s.sky.sun_illuminance = 1.0f;
     s.sky.moon = false;  // the reference has neither moon nor stars
     s.sky.stars = false;
+    s.clouds.enabled = false;  // nor clouds
     return s;
 }
 
