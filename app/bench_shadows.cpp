@@ -84,6 +84,7 @@ int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
     base.debug.view = DebugView::Shadow;
     base.lights = {};
     base.ssao.enabled = false;
+    base.clouds.enabled = false;  // the cascades alone (cloud shadows move with the wind)
     base.shadows.enabled = true;
     base.sky.sun_mode = SunMode::Angles;
     if (InputErrors errors = renderer.prepare(base); !errors.empty() || !renderer.terrain()) {

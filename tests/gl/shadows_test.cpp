@@ -48,6 +48,7 @@ Settings pillarScene() {
     s.sky.sun_azimuth_deg = 90.0f;  // east (+x): shadows fall towards -x
     s.sky.sun_elevation_deg = 45.0f;
     s.ssao.enabled = false;
+    s.clouds.enabled = false;  // the cascades alone: no cloud shadow over the probes
     return s;
 }
 
