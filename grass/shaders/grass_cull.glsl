@@ -48,18 +48,9 @@ layout(location = 22) uniform uvec4 u_capacity;    // near, far list capacity; f
 
 shared uint s_drawn;
 
-// The full-resolution terrain surface at texel coordinates t: triangles split along the
-// (x+1, z)-(x, z+1) diagonal, as the terrain's grid mesh (terrain.glsl surfaceSample).
+// The full-resolution terrain surface at texel coordinates t (tiles.glsl).
 float surfaceSample(vec2 t) {
-    t = clamp(t, vec2(0.0), u_tile_layer.zw - 1.0);
-    ivec2 i = min(ivec2(t), ivec2(u_tile_layer.zw) - 2);
-    vec2 f = t - vec2(i);
-    float h00 = tileFetch(u_height, i, u_tiles, u_tile_layer).r;
-    float h10 = tileFetch(u_height, i + ivec2(1, 0), u_tiles, u_tile_layer).r;
-    float h01 = tileFetch(u_height, i + ivec2(0, 1), u_tiles, u_tile_layer).r;
-    float h11 = tileFetch(u_height, i + ivec2(1, 1), u_tiles, u_tile_layer).r;
-    return f.x + f.y <= 1.0 ? h00 + (h10 - h00) * f.x + (h01 - h00) * f.y
-                            : h11 + (h01 - h11) * (1.0 - f.x) + (h10 - h11) * (1.0 - f.y);
+    return tileSurfaceSample(u_height, t, u_tiles, u_tile_layer);
 }
 
 float keepShare(float d) {

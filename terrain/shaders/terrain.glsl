@@ -26,18 +26,9 @@ layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of th
 layout(location = 12) uniform ivec4 u_bias_cells;  // leaf cells in x, z; texels per cell; bias on (1) / off (0)
 layout(location = 13) uniform float u_max_error_px;  // the LOD's screen error bound (error view)
 
-// The full-resolution surface at continuous texel coordinates t (samples): texels joined by
-// triangles split along the (x+1, z)-(x, z+1) diagonal, as the grid mesh is (terrain.cpp).
+// The full-resolution terrain surface at texel coordinates t (tiles.glsl).
 float surfaceSample(vec2 t) {
-    t = clamp(t, vec2(0.0), u_tile_layer.zw - 1.0);
-    ivec2 i = min(ivec2(t), ivec2(u_tile_layer.zw) - 2);
-    vec2 f = t - vec2(i);
-    float h00 = tileFetch(u_height, i, u_tiles, u_tile_layer).r;
-    float h10 = tileFetch(u_height, i + ivec2(1, 0), u_tiles, u_tile_layer).r;
-    float h01 = tileFetch(u_height, i + ivec2(0, 1), u_tiles, u_tile_layer).r;
-    float h11 = tileFetch(u_height, i + ivec2(1, 1), u_tiles, u_tile_layer).r;
-    return f.x + f.y <= 1.0 ? h00 + (h10 - h00) * f.x + (h01 - h00) * f.y
-                            : h11 + (h01 - h11) * (1.0 - f.x) + (h10 - h11) * (1.0 - f.y);
+    return tileSurfaceSample(u_height, t, u_tiles, u_tile_layer);
 }
 
 #ifdef VERTEX_SHADER

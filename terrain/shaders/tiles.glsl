@@ -18,3 +18,18 @@ vec4 tileFetch(sampler2DArray tex, ivec2 t, ivec4 tiles, vec4 layer) {
     ivec2 tile = min(t / tiles.z, tiles.xy - 1);
     return texelFetch(tex, ivec3(t - tile * tiles.z, tile.y * tiles.x + tile.x), 0);
 }
+
+// The full-resolution surface (heightmap samples) at continuous texel coordinates t: texels
+// joined by triangles split along the (x+1, z)-(x, z+1) diagonal, as the terrain's grid mesh is
+// (terrain.cpp), so it is the height the terrain draws at full resolution.
+float tileSurfaceSample(sampler2DArray height, vec2 t, ivec4 tiles, vec4 layer) {
+    t = clamp(t, vec2(0.0), layer.zw - 1.0);
+    ivec2 i = min(ivec2(t), ivec2(layer.zw) - 2);
+    vec2 f = t - vec2(i);
+    float h00 = tileFetch(height, i, tiles, layer).r;
+    float h10 = tileFetch(height, i + ivec2(1, 0), tiles, layer).r;
+    float h01 = tileFetch(height, i + ivec2(0, 1), tiles, layer).r;
+    float h11 = tileFetch(height, i + ivec2(1, 1), tiles, layer).r;
+    return f.x + f.y <= 1.0 ? h00 + (h10 - h00) * f.x + (h01 - h00) * f.y
+                            : h11 + (h01 - h11) * (1.0 - f.x) + (h10 - h11) * (1.0 - f.y);
+}
