@@ -5,6 +5,7 @@
 
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
+#include "hash_noise.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
 layout(location = 0) uniform vec3 u_lift;
 layout(location = 1) uniform vec3 u_inv_gamma;  // 1 / gamma
@@ -18,12 +19,6 @@ layout(location = 6) uniform vec3 u_lut_offset;
 #endif
 layout(location = 0) out vec4 o_color;
 
-// A uniform value in [0, 1) per pixel and pattern (integer hash, the same on every GPU).
-float hashNoise(uvec3 v) {
-    uint h = v.x * 1664525u + v.y * 22695477u + v.z * 2891336453u + 1013904223u;
-    h ^= h >> 16; h *= 2246822519u; h ^= h >> 13; h *= 3266489917u; h ^= h >> 16;
-    return float(h >> 8) / 16777216.0;
-}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

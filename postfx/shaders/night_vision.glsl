@@ -6,16 +6,12 @@
 
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
+#include "hash_noise.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
 layout(location = 0) uniform vec4 u_params;  // gain, noise, vignette, pattern index
 layout(location = 1) uniform vec3 u_tint;
 layout(location = 0) out vec4 o_color;
 
-float hashNoise(uvec3 v) {
-    uint h = v.x * 1664525u + v.y * 22695477u + v.z * 2891336453u + 1013904223u;
-    h ^= h >> 16; h *= 2246822519u; h ^= h >> 13; h *= 3266489917u; h ^= h >> 16;
-    return float(h >> 8) / 16777216.0;
-}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
