@@ -165,7 +165,10 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
             });
         map = d.map;
     }
-    return {map, uniforms_.id(), compare_.id(), depth_.id()};
+    unsigned drawn = 0;
+    for (int i = 0; i < count; ++i)
+        if (u.info[i].x != 0.0f) drawn |= 1u << i;
+    return {map, uniforms_.id(), compare_.id(), depth_.id(), drawn};
 }
 
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
@@ -183,6 +186,7 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
             glUseProgram(rc.shaders.get("shadows/shaders/shadow_view.glsl")->id());
             glUniform1i(0, data.map.valid() ? cascades : 0);
+            glUniform1i(1, int(shadows.drawn));
             if (data.map.valid()) {
                 glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.map));
                 glBindSampler(binding::kShadowDepth, shadows.depth_sampler);

@@ -33,6 +33,7 @@ struct SunShadowInput {
     GLuint uniforms = 0;         // ShadowUniforms buffer
     GLuint compare_sampler = 0;  // depth compare, bilinear (PCF)
     GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search)
+    unsigned drawn = 0;          // bit c: cascade c had casters (the others' layers are stale)
     bool valid() const { return map.valid(); }
 };
 
