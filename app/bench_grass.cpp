@@ -11,9 +11,6 @@
 #include <cstdio>
 
 namespace vista {
-namespace {
-
-}  // namespace
 
 int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
     std::string error;

@@ -3,7 +3,7 @@
 // only ever take sunlight away from the terrain.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "sky/cloud_model.h"
 #include "terrain/heightmap.h"
 
@@ -19,11 +19,7 @@ using namespace vista;
 
 namespace {
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    return r;
-}
+FrameRenderer& renderer() { return test::fileRenderer(); }
 
 Settings skyWithClouds(float sun_elevation_deg) {
     Settings s;

@@ -4,7 +4,7 @@
 // where the terrain is grass, and the same after moving away and back.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "grass/grass.h"
 #include "terrain/heightmap.h"
 #include "terrain/material_weights.h"
@@ -20,17 +20,7 @@ using namespace vista;
 
 namespace {
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    static bool compiled = [] {
-        std::string errors;
-        REQUIRE_MESSAGE(r.compilePrograms(errors), errors);
-        return true;
-    }();
-    (void)compiled;
-    return r;
-}
+FrameRenderer& renderer() { return test::compiledFileRenderer(); }
 
 constexpr int kMapSamples = 129;
 constexpr float kMapSize = 512.0f;   // 4 m texels

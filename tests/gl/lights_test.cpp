@@ -6,7 +6,7 @@
 #include "app/scene.h"
 #include "lighting/brdf.h"
 #include "lighting/light_settings.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "terrain/heightmap.h"
 
 #include <glm/gtc/packing.hpp>
@@ -22,11 +22,7 @@ using namespace vista;
 
 namespace {
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    return r;
-}
+FrameRenderer& renderer() { return test::fileRenderer(); }
 
 // Gentle hills, 400 m square, heights 0..40 m.
 Settings hillScene() {

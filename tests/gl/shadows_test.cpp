@@ -3,7 +3,7 @@
 // leave no shadow pass and no shadow map.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "renderer/half.h"
 #include "terrain/heightmap.h"
 
@@ -16,11 +16,7 @@ using namespace vista;
 
 namespace {
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    return r;
-}
+FrameRenderer& renderer() { return test::fileRenderer(); }
 
 // 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in [-4, 4] m).
 const std::filesystem::path& pillarMap() {

@@ -3,7 +3,7 @@
 // for extreme views, LUTs cached across frames, and the sun's position from the time of day.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "sky/atmosphere.h"
 #include "sky/sky_reference_image.h"
 #include "terrain/heightmap.h"
@@ -20,11 +20,7 @@ using namespace vista;
 
 namespace {
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    return r;
-}
+FrameRenderer& renderer() { return test::fileRenderer(); }
 
 Settings skyOnly(float sun_elevation_deg, float sun_azimuth_deg = 180.0f) {
     Settings s;

@@ -4,7 +4,7 @@
 #include "app/capture.h"
 #include "app/frame.h"
 #include "app/scene.h"
-#include "gl_fixture.h"
+#include "renderer_fixture.h"
 #include "renderer/half.h"
 #include "terrain/heightmap.h"
 
@@ -55,17 +55,7 @@ Rendered render(FrameRenderer& renderer, const Settings& s, const ViewParams& vi
     return r;
 }
 
-FrameRenderer& renderer() {
-    test::glContext();
-    static FrameRenderer r(vistaRoot());
-    static bool compiled = [] {
-        std::string errors;
-        REQUIRE_MESSAGE(r.compilePrograms(errors), errors);
-        return true;
-    }();
-    (void)compiled;
-    return r;
-}
+FrameRenderer& renderer() { return test::compiledFileRenderer(); }
 
 ViewParams lookingDown(double height, double fov) {
     return ViewParams{{0.0, height, 0.0}, 0.0, -89.0, fov, 0.5, 96, 54};
