@@ -46,6 +46,8 @@ std::vector<ProgramKey> allPrograms() {
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
         programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
+        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS"}});
+        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS"}});
     }
     for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"}) {
         programs.push_back({"lighting/shaders/light_cull.glsl", {method}});
@@ -205,16 +207,19 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     const glm::dmat4 view_proj(rc.matrices.view_proj);
     const double error_scale = screenErrorScale(rc.view.fov_deg, rc.view.height);
     const glm::dvec3 sun = sunDirection(s.sky);
+    // The shadowed spot lights' views are covered by the same selection (one LOD for all).
+    const std::span<const Frustum> spots = spot_shadows_ ? std::span<const Frustum>(spot_shadows_->frusta())
+                                                         : std::span<const Frustum>();
     if (!sunCastsShadows(s.shadows, sun)) {
         sun_shadows_.reset();  // no sun shadows: no passes, no shadow map
-        terrain_->select(rc.view.position, view_proj, s.terrain, error_scale);
+        terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, nullptr, spots);
         return {};
     }
     if (!sun_shadows_) sun_shadows_ = std::make_unique<SunShadows>();
     sun_shadows_->prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view);
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
-    terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters);
+    terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
     SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain);
     const SunShadowStats& st = sun_shadows_->stats();
     report.counters["shadows.cascades"] = double(st.cascades);
@@ -224,11 +229,10 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     return shadows;
 }
 
-void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
-                                        const FrameRequest& request, SceneTargets& scene, FrameReport& report) {
+bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report) {
     if (sceneLightCount(s.lights) == 0) {
         local_lights_.reset();  // no local lights: no passes, no buffers
-        return;
+        return false;
     }
     if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
     GroundHeight ground;
@@ -239,12 +243,16 @@ void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& 
     report.counters["lights.visible"] = double(st.visible);
     report.counters["lights.build_ms"] = st.build_ms;
     report.counters["lights.memory_bytes"] = double(st.memory_bytes);
-    if (!any) return;
-    LightPassOptions options;
-    options.count = request.count_lights;
-    options.heat = s.debug.view == DebugView::Lights;
-    options.forward = request.forward_lights;
-    local_lights_->addPasses(graph, rc, scene, counters_, options);
+    return any;
+}
+
+bool FrameRenderer::prepareSpotShadows(const RenderContext& rc, const Settings& s) {
+    if (s.shadows.enabled && s.shadows.spot_enabled) {
+        if (!spot_shadows_) spot_shadows_ = std::make_unique<SpotShadows>();
+        if (spot_shadows_->prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
+    }
+    spot_shadows_.reset();  // no shadowed spot light: no pass, no atlas
+    return false;
 }
 
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
@@ -257,8 +265,23 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     SunShadowInput shadows;
     const bool shadow_view = s.debug.view == DebugView::Shadow;
     const bool grass = terrain && s.grass.enabled;
+    // Local lights first: the shadowed spot lights' views widen the terrain selection.
+    const bool local_lights = terrain && !shadow_view && prepareLocalLights(rc, s, report);
+    if (!terrain) local_lights_.reset();
+    if (!(local_lights && prepareSpotShadows(rc, s))) spot_shadows_.reset();
+    SpotShadowInput spot_input;
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report);
+        if (spot_shadows_) {
+            spot_input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain);
+            local_lights_->setShadowSlots(*spot_shadows_);
+            const SpotShadowStats& st = spot_shadows_->stats();
+            report.counters["shadows.spot_candidates"] = double(st.candidates);
+            report.counters["shadows.spot_shadowed"] = double(st.shadowed);
+            report.counters["shadows.spot_unshadowed"] = double(st.unshadowed);
+            report.counters["shadows.spot_caster_instances"] = double(st.caster_instances);
+            report.counters["shadows.spot_memory_bytes"] = double(st.memory_bytes);
+        }
         // Beyond the blades the terrain's grass band takes their mean colour.
         const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
         terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
@@ -294,9 +317,14 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         const bool sunlit = sky.sun_illuminance.x + sky.sun_illuminance.y + sky.sun_illuminance.z > 0.0;
         if (clouds && s.clouds.shadows && sunlit) scene.cloud_shadow = clouds_->addShadowPass(graph, rc, light.cloud_shadow_map);
         addSunLightingPass(graph, rc, light, scene, shadows, s.debug.view);
-        if (!shadow_view) addLocalLightPasses(graph, rc, s, request, scene, report);
-    } else {
-        local_lights_.reset();
+        if (local_lights) {
+            LightPassOptions options;
+            options.count = request.count_lights;
+            options.heat = s.debug.view == DebugView::Lights;
+            options.forward = request.forward_lights;
+            options.spot_shadows = &spot_input;
+            local_lights_->addPasses(graph, rc, scene, counters_, options);
+        }
     }
     if (s.debug.grid && !shadow_view) addGridPass(graph, rc, s.debug, s.sky, scene);
     if (shadow_view) {
@@ -313,6 +341,8 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth);
     if (s.debug.view == DebugView::ShadowMap)
         display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
+    else if (s.debug.view == DebugView::SpotAtlas)
+        display = addSpotAtlasViewPass(graph, rc, spot_input, spot_shadows_ ? spot_shadows_->tilesPerSide() : 0);
     else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image
         display = addDebugViewPass(graph, rc, s.debug, scene);
 

@@ -13,6 +13,7 @@
 #include "renderer/transient_pool.h"
 #include "lighting/local_lights.h"
 #include "postfx/chain.h"
+#include "shadows/spot_shadows.h"
 #include "shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
 #include "sky/clouds.h"
@@ -70,6 +71,7 @@ public:
     Clouds* clouds() { return clouds_.get(); }   // null unless the last frame drew clouds
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
+    SpotShadows* spotShadows() { return spot_shadows_.get(); }  // null while no spot light is shadowed
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
@@ -93,8 +95,10 @@ private:
     // "shadows.cascadeN" passes; returns what lighting.sun samples (invalid: no sun shadows).
     SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                              const ViewParams* fit_view, FrameReport& report);
-    void addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s, const FrameRequest& request,
-                             SceneTargets& scene, FrameReport& report);
+    // This frame's local lights (false: none can light a visible point, add no light pass).
+    bool prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report);
+    // The shadowed spot lights among them (false: none; then spot_shadows_ is reset).
+    bool prepareSpotShadows(const RenderContext& rc, const Settings& s);
 
     ShaderLibrary shaders_;
     GlDevice device_;
@@ -109,6 +113,7 @@ private:
     std::unique_ptr<Clouds> clouds_;      // null while [clouds] draws nothing
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
+    std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)

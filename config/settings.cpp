@@ -47,9 +47,9 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {
-    static constexpr std::array<const char*, 8> views{"final", "depth", "albedo", "normals", "lights", "cascades", "shadow_map", "shadow"};
+    static constexpr std::array<const char*, 9> views{"final", "depth", "albedo", "normals", "lights", "cascades", "shadow_map", "shadow", "spot_atlas"};
     v.section("debug", "debug views and helpers");
-    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel, cascades = sun shadow cascade colours, shadow_map = the cascades' depth maps, shadow = the sun's visibility (white lit, black shadowed or facing away)"},
+    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel, cascades = sun shadow cascade colours, shadow_map = the cascades' depth maps, shadow = the sun's visibility (white lit, black shadowed or facing away), spot_atlas = the spot lights' shadow atlas"},
              s.view, views);
     v.field({"heat_max", "lights", "light count shown red in the lights view"}, s.heat_max, 1.0f, 65536.0f);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
@@ -297,7 +297,7 @@ void describe(SettingsVisitor& v, SsaoSettings& s) {
 
 void describe(SettingsVisitor& v, ShadowSettings& s) {
     static constexpr std::array<const char*, 3> filters{"hard", "pcf", "pcss"};
-    v.section("shadows", "sun shadows: cascaded shadow maps, stable while flying");
+    v.section("shadows", "sun shadows (cascaded shadow maps, stable while flying) and shadowed spot lights");
     v.field({"enabled", "", "the sun casts shadows"}, s.enabled);
     v.field({"cascades", "", "PSSM cascades up to max_distance_m"}, s.cascades, 1, 4);
     v.field({"resolution", "texels", "shadow map size per cascade side"}, s.resolution, 128, 4096);
@@ -317,6 +317,18 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"min_sun_elevation_deg", "deg", "below this sun elevation there are no sun shadows (and no shadow passes)"}, s.min_sun_elevation_deg, -10.0f, 90.0f);
     v.field({"stabilize", "", "sphere-fitted cascades snapped to whole texels (off: tight boxes that shimmer)"}, s.stabilize);
     v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
+    v.field({"spot_enabled", "", "spot lights (with `shadow on`, their default) cast shadows from an atlas, largest on screen first"}, s.spot_enabled);
+    v.field({"spot_atlas_resolution", "texels", "spot shadow atlas size per side"}, s.spot_atlas_resolution, 256, 8192);
+    v.field({"spot_max_lights", "", "shadowed spot lights at once (atlas tiles); the rest go unshadowed and are counted"}, s.spot_max_lights, 1, 64);
+    v.choice({"spot_filter", "", "spot shadows: hard, pcf or pcss (soft, contact hardening)"}, s.spot_filter, filters);
+    v.field({"spot_taps", "", "spot shadows: Poisson taps per pixel (pcf, pcss)"}, s.spot_taps, 1, 64);
+    v.field({"spot_filter_radius_texels", "texels", "spot shadows: PCF kernel radius (PCSS's smallest)"}, s.spot_filter_radius_texels, 0.0f, 16.0f);
+    v.field({"spot_light_size_m", "m", "spot shadows, PCSS: radius of the light's bulb"}, s.spot_light_size_m, 0.0f, 10.0f);
+    v.field({"spot_max_penumbra_texels", "texels", "spot shadows, PCSS: largest kernel and blocker search radius"}, s.spot_max_penumbra_texels, 1.0f, 64.0f);
+    v.field({"spot_slope_bias", "", "spot shadows: slope-scaled depth bias while drawing casters"}, s.spot_slope_bias, 0.0f, 16.0f);
+    v.field({"spot_depth_bias_texels", "texels", "spot shadows: receiver moved towards the light, in texel footprints"}, s.spot_depth_bias_texels, 0.0f, 16.0f);
+    v.field({"spot_normal_offset_texels", "texels", "spot shadows: receiver offset along its normal"}, s.spot_normal_offset_texels, 0.0f, 16.0f);
+    v.field({"spot_min_screen_px", "px", "spot lights whose bounding sphere is smaller on screen cast no shadow"}, s.spot_min_screen_px, 0.0f, 10000.0f);
 }
 
 void describe(SettingsVisitor& v, DofSettings& s) {

@@ -50,7 +50,7 @@ struct CaptureSettings {
     std::string out = "out";                       //!< output directory
 };
 
-enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow };
+enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow, SpotAtlas };
 
 struct DebugSettings {
     DebugView view = DebugView::Final;
@@ -346,6 +346,20 @@ struct ShadowSettings {
     float min_sun_elevation_deg = 0.0f;  //!< deg, below this the sun casts no shadows (no passes), -10..90
     bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
+    // Shadowed spot lights (shadows/spot_shadows.h): the visible spot lights with `shadow on`
+    // (their default), largest on screen first, each get a square tile of one depth atlas.
+    bool spot_enabled = true;            //!< spot lights cast shadows from the atlas
+    int spot_atlas_resolution = 2048;    //!< texels per atlas side, 256..8192
+    int spot_max_lights = 16;            //!< shadowed spot lights at once (atlas tiles), 1..64; the rest go unshadowed (counted)
+    ShadowFilter spot_filter = ShadowFilter::Pcss;  //!< hard | pcf | pcss (000: blocker search, penumbra (d_r - d_b) w / d_b)
+    int spot_taps = 16;                  //!< Vogel-disk taps (pcf, pcss; also the blocker search), 1..64
+    float spot_filter_radius_texels = 1.5f;   //!< PCF kernel radius (and PCSS's smallest), texels, 0..16
+    float spot_light_size_m = 0.1f;      //!< PCSS: radius of the light's bulb, m, 0..10
+    float spot_max_penumbra_texels = 10.0f;   //!< PCSS: largest kernel radius and blocker search radius, texels, 1..64
+    float spot_slope_bias = 2.0f;        //!< glPolygonOffset factor while drawing casters, 0..16
+    float spot_depth_bias_texels = 1.0f; //!< receiver moved towards the light by this many texel footprints, 0..16
+    float spot_normal_offset_texels = 1.5f;   //!< receiver moved along its normal (times the sine of the light angle), texels, 0..16
+    float spot_min_screen_px = 4.0f;     //!< px, lights whose bounding sphere is smaller on screen cast no shadow, 0..10000
 };
 
 //! Depth of field: a thin-lens circle of confusion from the focus distance, focal length and

@@ -90,6 +90,7 @@ void describeLight(SettingsVisitor& v, Light& l) {
     v.field({"direction", "", "spot axis, not all zero"}, l.direction, -1.0e6f, 1.0e6f);
     v.field({"cone_inner", "deg", "half-angle of full intensity, at most cone_outer"}, l.inner_deg, 0.0f, 180.0f);
     v.field({"cone_outer", "deg", "half-angle where the light ends"}, l.outer_deg, 0.0f, 180.0f);
+    v.field({"shadow", "", "casts a shadow (spot shadow atlas, [shadows] spot_*)"}, l.shadow);
 }
 
 void describeVolume(SettingsVisitor& v, LightVolume& g) {
@@ -137,7 +138,7 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     s.animation.seed = std::uint32_t(seed);
     NamedList lights(s.lights, &NamedLight::light, parseLightSpec, formatLightSpec, describeLight);
     v.list({"light", "", "a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
-                         "direction X Y Z, cone INNER OUTER (deg)"},
+                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on)"},
            lights);
     NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
     v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "
@@ -175,8 +176,13 @@ std::string parseLightSpec(std::string_view text, Light& out) {
             if (v[0] > v[1]) return "cone: inner angle " + str(v[0]) + " is wider than outer angle " + str(v[1]);
             out.inner_deg = float(v[0]);
             out.outer_deg = float(v[1]);
+        } else if (key == "shadow") {
+            std::string_view value = r.word();
+            if (value != "on" && value != "off")
+                return "shadow: expected 'on' or 'off', got '" + std::string(value) + "'";
+            out.shadow = value == "on";
         } else {
-            return "unknown word '" + std::string(key) + "' (expected radius, color, intensity, direction or cone)";
+            return "unknown word '" + std::string(key) + "' (expected radius, color, intensity, direction, cone or shadow)";
         }
     }
     return {};
@@ -241,6 +247,7 @@ std::string formatLightSpec(const Light& l) {
         s += "  direction " + str(l.direction.x) + " " + str(l.direction.y) + " " + str(l.direction.z);
         s += "  cone " + str(l.inner_deg) + " " + str(l.outer_deg);
     }
+    if (!l.shadow) s += "  shadow off";
     return s;
 }
 

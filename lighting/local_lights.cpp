@@ -17,9 +17,10 @@ namespace vista {
 namespace {
 
 struct GpuLight {
-    glm::vec4 position_radius, color_scale, direction_offset;
+    glm::vec4 position_radius, color_scale, direction_offset, shadow;
 };
-static_assert(sizeof(GpuLight) == 3 * sizeof(glm::vec4), "GpuLight must match LocalLight in lights.glsl");
+static_assert(sizeof(GpuLight) == 4 * sizeof(glm::vec4), "GpuLight must match LocalLight in lights.glsl");
+constexpr std::size_t kGpuLightVec4 = sizeof(GpuLight) / sizeof(glm::vec4);
 
 // std140 mirror of LightGrid in lighting/shaders/lights.glsl.
 struct GridUniforms {
@@ -211,15 +212,17 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
 
     // Light buffer, camera-relative (the subtraction in double keeps far-out scenes exact).
     const std::size_t n = order.size();
-    std::vector<glm::vec4>& gpu = light_scratch_;  // GpuLight: 3 vec4 per light
-    gpu.resize(3 * n);
+    std::vector<glm::vec4>& gpu = light_scratch_;  // GpuLight: 4 vec4 per light
+    gpu.resize(kGpuLightVec4 * n);
     for (std::size_t k = 0; k < n; ++k) {
         const Light& l = animated_[order[k]];
         const SpotCone cone = spotCone(l);
         const glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
-        gpu[3 * k + 0] = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
-        gpu[3 * k + 1] = glm::vec4(l.color * l.intensity, cone.scale);
-        gpu[3 * k + 2] = glm::vec4(dir, cone.offset);
+        glm::vec4* g = &gpu[kGpuLightVec4 * k];
+        g[0] = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
+        g[1] = glm::vec4(l.color * l.intensity, cone.scale);
+        g[2] = glm::vec4(dir, cone.offset);
+        g[3] = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);  // unshadowed until setShadowSlots()
     }
     lights_buf_.upload(gpu.data(), n * sizeof(GpuLight), "lights");
 
@@ -362,6 +365,20 @@ void LocalLights::uploadHash() {
     hash_uploaded_ = true;
 }
 
+void LocalLights::setShadowSlots(const SpotShadows& shadows) {
+    // order_scratch_ (GPU index -> light index) is ascending, so a light's GPU index is a search.
+    const std::vector<std::uint32_t>& order = order_scratch_;
+    for (std::size_t k = 0; k < shadows.picks().size(); ++k) {
+        const std::uint32_t light = shadows.picks()[k].light;
+        auto it = std::lower_bound(order.begin(), order.end(), light);
+        if (it == order.end() || *it != light) continue;  // not on the GPU this frame: nothing to shadow
+        const glm::vec4 slot(float(shadows.slotOf(k)), 0.0f, 0.0f, 0.0f);
+        const auto index = std::size_t(it - order.begin());
+        glNamedBufferSubData(lights_buf_.buffer.id(), GLintptr(index * sizeof(GpuLight) + 3 * sizeof(glm::vec4)),
+                             sizeof slot, &slot);
+    }
+}
+
 const char* LocalLights::define() const { return methodDefine(stats_.method); }
 
 void LocalLights::bindForForward() const {
@@ -419,10 +436,11 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
     }
 
     struct Data {
-        TextureHandle depth, albedo, normal, hdr, heat;
+        TextureHandle depth, albedo, normal, hdr, heat, spot;
     };
     const Data& d = graph.addPass<Data>("lights.shade",
         [&](PassBuilder& b, Data& data) {
+            if (options.spot_shadows && options.spot_shadows->valid()) data.spot = b.read(options.spot_shadows->atlas);
             data.depth = b.read(targets.depth);
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
@@ -441,8 +459,17 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             std::vector<std::string> defines = {methodDefine(method)};
             if (options.count) defines.push_back("COUNT_LIGHTS");
             if (data.heat.valid()) defines.push_back("LIGHT_HEAT");
+            if (data.spot.valid()) defines.push_back("HAS_SPOT_SHADOWS");
             glUseProgram(rc.shaders.get("lighting/shaders/light_shade.glsl", defines)->id());
             bindBuffers();
+            if (data.spot.valid()) {
+                const SpotShadowInput& spot = *options.spot_shadows;
+                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kSpotShadowUniforms, spot.uniforms);
+                glBindTextureUnit(binding::kSpotShadowMap, ctx.texture(data.spot));
+                glBindSampler(binding::kSpotShadowMap, spot.compare_sampler);
+                glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.spot));
+                glBindSampler(binding::kSpotShadowDepth, spot.depth_sampler);
+            }
             if (options.count) {
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "lights.evaluations"));
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "lights.exact"));
@@ -455,6 +482,10 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             if (data.heat.valid()) glDisablei(GL_BLEND, 1);
             drawFullscreen(rc);
             glDisablei(GL_BLEND, 0);
+            if (data.spot.valid()) {
+                glBindSampler(binding::kSpotShadowMap, 0);
+                glBindSampler(binding::kSpotShadowDepth, 0);
+            }
             if (options.count) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         });
     targets.hdr = d.hdr;

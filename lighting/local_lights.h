@@ -13,8 +13,8 @@
 //
 // GPU layouts (std430, lighting/shaders/lights.glsl):
 //   lights    (tiled, clustered: only the lights whose bounding sphere meets the view frustum,
-//             in light order; naive, hashed: all) 3 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
-//             scale; unit spot axis + cone offset (lighting/lights.h SpotCone; point: 0, 1).
+//             in light order; naive, hashed: all) 4 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
+//             scale; unit spot axis + cone offset (lighting/lights.h SpotCone; point: 0, 1); spot shadow tile (-1: none), 0, 0, 0.
 //   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
 //   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
 //             tiles_x (tile.y + tiles_y slice)); count 0xFFFFFFFF = overflow, shade every light.
@@ -33,6 +33,7 @@
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "shadows/spot_shadows.h"
 
 #include <glm/vec4.hpp>
 
@@ -77,6 +78,7 @@ struct LightPassOptions {
     bool count = false;  // lights.evaluations and lights.exact counters
     bool heat = false;   // targets.light_heat for the lights debug view
     bool forward = false;  // lists also cover transparent depths (a forward pass follows)
+    const SpotShadowInput* spot_shadows = nullptr;  // this frame's spot shadow atlas (see setShadowSlots())
 };
 
 class LocalLights {
@@ -95,6 +97,9 @@ public:
     // Needs targets.depth, .albedo, .normal; adds to targets.hdr (and makes targets.light_heat).
     void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
                    const LightPassOptions& options);
+    // After prepare(): gives lights() [pick.light] the atlas tile slotOf(k) of each pick k (-1:
+    // unshadowed); every other light stays unshadowed this frame.
+    void setShadowSlots(const SpotShadows& shadows);
     const LocalLightStats& stats() const { return stats_; }
     // Forward passes (transparent surfaces) drawn after this frame's lights.cull: compile with
     // the define (LIGHTS_NAIVE, _TILED, _CLUSTERED or _HASHED), include

@@ -23,6 +23,9 @@ constexpr int kAux = 7;            // shader storage: a pass's second counter or
 constexpr int kShadowUniforms = 2; // uniform block: ShadowUniforms (shadows/shaders/shadows.glsl)
 constexpr int kShadowMap = 8;      // texture unit: sun cascades, depth compare (sampler2DArrayShadow)
 constexpr int kShadowDepth = 9;    // texture unit: the same cascades, raw depth (PCSS blocker search)
+constexpr int kSpotShadowUniforms = 3;  // uniform block: SpotShadowUniforms (shadows/shaders/spot_shadows.glsl)
+constexpr int kSpotShadowMap = 10;      // texture unit: spot shadow atlas, depth compare (sampler2DShadow)
+constexpr int kSpotShadowDepth = 11;    // texture unit: the same atlas, raw depth (PCSS blocker search, debug view)
 constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (grass/shaders/grass_common.glsl)
 constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
 

@@ -198,7 +198,7 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
 }
 
 std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms() {
-    return {{"shadows/shaders/shadow_view.glsl", {}}};
+    return {{"shadows/shaders/shadow_view.glsl", {}}, {"shadows/shaders/spot_atlas_view.glsl", {}}};
 }
 
 }  // namespace vista

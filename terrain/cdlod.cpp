@@ -76,11 +76,16 @@ bool intersects(const Frustum& f, const Box& b) {
     return true;
 }
 
+// A union of frusta: the box meets at least one.
+bool intersects(std::span<const Frustum> frusta, const Box& b) {
+    return std::ranges::any_of(frusta, [&](const Frustum& f) { return intersects(f, b); });
+}
+
 // One selection pass: Strugar's LODSelect with quadrants as separate entries.
 struct Selector {
     const MinMaxQuadtree& tree;
     const TerrainMapping& mapping;
-    const Frustum& frustum;
+    std::span<const Frustum> frustum;
     glm::dvec3 camera;
     const std::vector<double>& ranges;
     const DistanceBias* bias;
@@ -255,6 +260,11 @@ void lodRanges(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const 
 
 void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
                  const glm::dvec3& camera, const Frustum& frustum, Selection& out, const DistanceBias* bias) {
+    selectNodes(tree, mapping, lod, camera, std::span<const Frustum>(&frustum, 1), out, bias);
+}
+
+void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
+                 const glm::dvec3& camera, std::span<const Frustum> frustum, Selection& out, const DistanceBias* bias) {
     out.nodes.clear();
     out.morph_consts.clear();
     lodRanges(tree, mapping, lod, out.ranges, out.morph_starts);

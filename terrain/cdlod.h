@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace vista {
@@ -125,6 +126,10 @@ void lodRanges(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const 
 // bound of d_eff over the node). Allocation-free after the first call if `out` is reused.
 void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
                  const glm::dvec3& camera, const Frustum& frustum, Selection& out, const DistanceBias* bias = nullptr);
+// The same for the union of several frusta: the parts of the map inside any of them.
+void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, const LodSettings& lod,
+                 const glm::dvec3& camera, std::span<const Frustum> frusta, Selection& out,
+                 const DistanceBias* bias = nullptr);
 
 // Keeps the nodes of `from` whose boxes are not wholly outside `frustum` (camera-relative to
 // the same camera): the main camera's selection reused for a shadow pass, so casters and

@@ -159,7 +159,7 @@ double Terrain::heightAt(double x, double z) const {
 }
 
 const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
-                                double error_scale, const Frustum* caster_frustum) {
+                                double error_scale, const Frustum* caster_frustum, std::span<const Frustum> extra) {
     auto start = std::chrono::steady_clock::now();
     source_.origin = s.origin;  // moving the terrain needs no reload
     camera_ = camera;
@@ -183,10 +183,11 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     }
     // The mapping is centred on the origin: select with the camera relative to the terrain.
     const Frustum view = frustumFromViewProj(view_proj);
-    selectNodes(tree_, mapping_, lod_, camera - s.origin, caster_frustum ? *caster_frustum : view, selection_,
-                error_metric ? &bias_ : nullptr);
+    frusta_.assign(1, caster_frustum ? *caster_frustum : view);
+    frusta_.insert(frusta_.end(), extra.begin(), extra.end());
+    selectNodes(tree_, mapping_, lod_, camera - s.origin, frusta_, selection_, error_metric ? &bias_ : nullptr);
     const Selection* drawn = &selection_;
-    if (caster_frustum) {
+    if (caster_frustum || !extra.empty()) {
         cullSelection(selection_, view, visible_);
         drawn = &visible_;
     }
@@ -287,6 +288,34 @@ void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::ve
     setVertexState(s, program);
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_instances_.id(), offset, bytes);
     glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size()));
+}
+
+void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
+                              const std::function<void(std::size_t)>& before) {
+    GLint align = 256;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
+    std::vector<GLintptr> offsets(lists.size());
+    GLsizeiptr total = 0;
+    for (std::size_t i = 0; i < lists.size(); ++i) {
+        offsets[i] = total;
+        total += (GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)) + align - 1) / align * align;
+    }
+    if (total == 0) return;
+    if (!shadow_lists_ || shadow_lists_.size() < total)  // only scenes with shadowed spot lights pay for it
+        shadow_lists_ = gl::Buffer::create(std::max(total, shadow_lists_.size() * 3 / 2), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                           "terrain spot shadow instances");
+    for (std::size_t i = 0; i < lists.size(); ++i)
+        if (!lists[i].empty())
+            glNamedBufferSubData(shadow_lists_.id(), offsets[i], GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)),
+                                 lists[i].data());
+    setVertexState(s, program);
+    for (std::size_t i = 0; i < lists.size(); ++i) {
+        if (lists[i].empty()) continue;
+        before(i);
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_lists_.id(), offsets[i],
+                          GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)));
+        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(lists[i].size()));
+    }
 }
 
 void Terrain::drawBounds(GLuint program) {

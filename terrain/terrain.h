@@ -13,7 +13,9 @@
 #include "terrain/lod_error.h"
 
 #include <array>
+#include <functional>
 #include <memory>
+#include <span>
 
 namespace vista {
 
@@ -58,9 +60,11 @@ public:
     // view: the LOD keeps the vertical screen error within s.max_error_px for it. With
     // `caster_frustum` (the view frustum widened towards the sun, shadows/cascades.h) the
     // selection covers it instead, and shadow passes draw parts of it (shadowInstances()):
-    // one selection per frame, so casters and receivers share one LOD.
+    // one selection per frame, so casters and receivers share one LOD. `extra` frusta (spot
+    // shadow views, camera-relative) are covered too; the view draws only its own part.
     const Selection& select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
-                            double error_scale, const Frustum* caster_frustum = nullptr);
+                            double error_scale, const Frustum* caster_frustum = nullptr,
+                            std::span<const Frustum> extra = {});
     const Selection& selection() const { return selection_; }
     const std::vector<TerrainInstance>& instances() const { return instances_; }
     const GridErrors& gridErrors() const { return errors_; }
@@ -83,6 +87,10 @@ public:
     // 0..kShadowSlots-1 of the shadow instance buffer (made on first use).
     static constexpr int kShadowSlots = 8;
     void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot);
+    // Draws several instance lists depth-only (spot shadow tiles): all are uploaded at once, then
+    // list i is drawn after before(i) has set its viewport and matrix. Empty lists are skipped.
+    void drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
+                         const std::function<void(std::size_t)>& before);
     // Draws the selected nodes' boxes as lines (debug view; its buffer is made on first use).
     void drawBounds(GLuint program);
 
@@ -111,6 +119,7 @@ private:
     Selection selection_;       // what select() chose: the view's nodes, or the caster frustum's
     Selection visible_;         // the view's nodes of a caster selection
     mutable Selection culled_;  // scratch for shadowInstances()
+    std::vector<Frustum> frusta_;  // scratch for select(): what the selection covers
     GridErrors errors_;
     DistanceBias bias_;
     std::array<double, 7> bias_key_{};  // what bias_ and lod_.base_range_m were made for
@@ -123,7 +132,7 @@ private:
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_;
-    gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_, shadow_instances_;
+    gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_, shadow_instances_, shadow_lists_;
     GLsizeiptr shadow_slot_bytes_ = 0;
     gl::VertexArray vao_;
     GLsizei index_count_ = 0;

@@ -3,12 +3,17 @@
 // (light_shade.glsl), the culling pass (light_cull.glsl) and forward passes (transparent
 // surfaces): any of them finds a position's candidate lights with lightRange() and shades them
 // with shadeLocalLight(). Formulas and layouts: lighting/lights.h, lighting/local_lights.h.
-// Needs common.glsl, gbuffer.glsl and brdf.glsl first.
+// Needs common.glsl, gbuffer.glsl and brdf.glsl first. With HAS_SPOT_SHADOWS (fragment stages)
+// shadowed spot lights read their tile of the spot shadow atlas.
+#ifdef HAS_SPOT_SHADOWS
+#include "../../shadows/shaders/spot_shadows.glsl"
+#endif
 
 struct LocalLight {
     vec4 position_radius;  // camera-relative position (m), radius (m)
     vec4 color_scale;      // colour * intensity, spot cone scale (0 for point lights)
     vec4 direction_offset; // unit spot axis, spot cone offset (1 for point lights)
+    vec4 shadow;           // x: tile of the spot shadow atlas (-1: unshadowed), yzw unused
 };
 layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { LocalLight u_lights[]; };
 // Per tile or cluster (tiled, clustered): (offset, count) into u_light_indices; count
@@ -114,8 +119,13 @@ vec3 shadeLocalLight(LocalLight light, Surface s, vec3 position, vec3 v, out boo
     float x = d2 / (r * r);
     float w = clamp(1.0 - x * x, 0.0, 1.0);
     float attenuation = w * w / (d2 + kLightFalloffEps) * (t * t * (3.0 - 2.0 * t));
-    return evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * light.color_scale.rgb *
-           (attenuation * max(dot(s.normal, l), 0.0));
+    float ndotl = dot(s.normal, l);
+    if (ndotl <= 0.0) return vec3(0.0);
+#ifdef HAS_SPOT_SHADOWS
+    int slot = int(light.shadow.x);
+    if (slot >= 0) attenuation *= spotShadow(slot, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy) * 6.28318531);
+#endif
+    return evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * light.color_scale.rgb * (attenuation * ndotl);
 }
 
 // The lights of a range shaded at one surface point; `exact` counts those that reach it.

@@ -3,6 +3,8 @@
 // constant depth bias against acne, filtered by a rotated Vogel (golden-angle) disk of
 // hardware depth compares (PCF), or PCSS: a blocker search first, then a kernel as wide as the
 // penumbra the sun's disk casts over the blocker-receiver distance.
+#include "shadow_filter.glsl"
+
 #define SHADOW_MAX_CASCADES 5  // kMaxSunCascades in shadows/cascades.h
 
 layout(std140, binding = BINDING_SHADOW_UNIFORMS) uniform ShadowUniforms {
@@ -14,19 +16,6 @@ layout(std140, binding = BINDING_SHADOW_UNIFORMS) uniform ShadowUniforms {
 };
 layout(binding = BINDING_SHADOW_MAP) uniform sampler2DArrayShadow u_shadow_map;
 layout(binding = BINDING_SHADOW_DEPTH) uniform sampler2DArray u_shadow_depth;
-
-// Tap i of n on the unit disk: golden-angle spiral (evenly spread like a Poisson disk),
-// rotated per pixel by `angle`.
-vec2 vogelTap(int i, int n, float angle) {
-    float r = sqrt((float(i) + 0.5) / float(n));
-    float a = float(i) * 2.39996323 + angle;
-    return r * vec2(cos(a), sin(a));
-}
-
-// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation without a texture.
-float shadowNoise(vec2 pixel) {
-    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
-}
 
 // Visibility (0 shadowed .. 1 lit) of camera-relative pos with normal n in cascade c.
 float cascadeVisibility(int c, vec3 pos, vec3 n, float ndotl, float angle) {

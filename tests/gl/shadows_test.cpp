@@ -1,6 +1,7 @@
 // Sun shadows under OSMesa: a pillar on a flat plane casts its shadow where geometry says (for
 // every filter), the images stay finite, and a sun at or below the horizon or shadows off
-// leave no shadow pass and no shadow map.
+// leave no shadow pass and no shadow map. Spot lights: a street light beside the pillar leaves
+// the ground behind it dark, a full atlas counts the lights it leaves out, and off is absent.
 #include "app/frame.h"
 #include "app/scene.h"
 #include "renderer_fixture.h"
@@ -184,4 +185,110 @@ TEST_CASE("shadows GL: frozen cascades stay where they were while the camera mov
     s.shadows.freeze = false;  // thawed: the cascades follow the camera again
     render(s, moved);
     CHECK(renderer().sunShadows()->cascades()[0].center_world != before[0].center_world);
+}
+
+namespace {
+
+// Night (the sun's 30 deg down) and one street light 25 m up beside the pillar, pointing down:
+// the pillar (40 m high, its walls slope to the ground from |x| = 4 to 6 m) hides the ground on
+// the far side (-x) from the light.
+Settings spotScene() {
+    Settings s = pillarScene();
+    s.sky.sun_elevation_deg = -30.0f;
+    Light l;
+    l.type = LightType::Spot;
+    l.position = {12.0, 25.0, 0.0};
+    l.direction = {0.0f, -1.0f, 0.0f};
+    l.radius_m = 80.0f;
+    l.intensity = 400.0f;
+    l.inner_deg = 50.0f;
+    l.outer_deg = 60.0f;
+    s.lights.lights = {{"street", l}};
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("spot shadows GL: a pillar hides the ground behind it from a street light, for every filter") {
+    Settings off = spotScene();
+    off.shadows.spot_enabled = false;
+    const Frame unshadowed = render(off, kAbove);
+    CHECK_FALSE(has(unshadowed.report.executed, "shadows.spot_atlas"));
+    CHECK(renderer().spotShadows() == nullptr);
+    for (ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
+        CAPTURE(int(filter));
+        Settings s = spotScene();
+        s.shadows.spot_filter = filter;
+        const Frame f = render(s, kAbove);
+        CHECK(f.nonfinite == 0);
+        CHECK(has(f.report.executed, "shadows.spot_atlas"));
+        CHECK(f.report.counters.at("shadows.spot_shadowed") == 1.0);
+        CHECK(f.report.counters.at("shadows.spot_unshadowed") == 0.0);
+        // Behind the pillar: in its shadow (only what little sky is left at night).
+        for (const glm::dvec3 p : {glm::dvec3(-10.0, 0.0, 0.0), glm::dvec3(-16.0, 0.0, 0.0)}) {
+            CAPTURE(p.x);
+            REQUIRE(unshadowed.luminanceAt(p) > 0.0f);
+            CHECK(f.luminanceAt(p) < 0.15f * unshadowed.luminanceAt(p));
+        }
+        // On the light's side and beside the shadow: as lit as without shadows.
+        for (const glm::dvec3 p : {glm::dvec3(20.0, 0.0, 0.0), glm::dvec3(-10.0, 0.0, 18.0), glm::dvec3(12.0, 0.0, -20.0)}) {
+            CAPTURE(p.x);
+            CAPTURE(p.z);
+            CHECK(f.luminanceAt(p) == doctest::Approx(unshadowed.luminanceAt(p)).epsilon(0.05));
+        }
+    }
+}
+
+TEST_CASE("spot shadows GL: a full atlas leaves the smallest lights unshadowed and says how many") {
+    Settings s = spotScene();
+    Light l = s.lights.lights[0].light;
+    s.lights.lights.clear();
+    for (int i = 0; i < 20; ++i) {
+        l.position = {-60.0 + 6.0 * i, 10.0 + i, 30.0};
+        s.lights.lights.push_back({"l" + std::to_string(i), l});
+    }
+    s.shadows.spot_max_lights = 16;
+    Frame f = render(s, kAbove);
+    CHECK(f.nonfinite == 0);
+    CHECK(f.report.counters.at("shadows.spot_candidates") == 20.0);
+    CHECK(f.report.counters.at("shadows.spot_shadowed") == 16.0);
+    CHECK(f.report.counters.at("shadows.spot_unshadowed") == 4.0);
+    REQUIRE(renderer().spotShadows() != nullptr);
+    // The tiles went to the 16 largest on screen.
+    std::vector<Light> lights;
+    for (const NamedLight& n : s.lights.lights) lights.push_back(n.light);
+    std::uint64_t candidates = 0;
+    const auto all = pickShadowedSpots(lights, kAbove, viewMatrices(kAbove), 64, 0.0f, candidates);
+    const auto& picks = renderer().spotShadows()->picks();
+    REQUIRE(picks.size() == 16);
+    for (std::size_t k = 0; k < picks.size(); ++k) CHECK(picks[k].light == all[k].light);
+    CHECK(all[16].screen_px <= picks.back().screen_px);
+    // The debug view shows the atlas.
+    s.debug.view = DebugView::SpotAtlas;
+    std::vector<std::uint8_t> ldr;
+    FrameRequest request;
+    request.capture_ldr = &ldr;
+    FrameReport report = renderer().render(s, kAbove, 0.0, request);
+    CHECK(has(report.executed, "shadows.spot_view"));
+    CHECK(has(report.executed, "shadows.spot_atlas"));
+}
+
+TEST_CASE("spot shadows GL: no spot light, shadows off or spot shadows off: no atlas pass and no atlas") {
+    Settings s = spotScene();
+    s.lights.lights[0].light.type = LightType::Point;
+    CHECK_FALSE(has(render(s, kAbove).report.executed, "shadows.spot"));
+    CHECK(renderer().spotShadows() == nullptr);
+    s = spotScene();
+    s.shadows.enabled = false;
+    CHECK_FALSE(has(render(s, kAbove).report.executed, "shadows.spot"));
+    CHECK(renderer().spotShadows() == nullptr);
+    s = spotScene();
+    s.lights.lights[0].light.shadow = false;
+    CHECK_FALSE(has(render(s, kAbove).report.executed, "shadows.spot"));
+    s = spotScene();  // back on, with the sun up too: both kinds of shadow at once stay finite
+    s.sky.sun_elevation_deg = 30.0f;
+    Frame f = render(s, kAbove);
+    CHECK(f.nonfinite == 0);
+    CHECK(has(f.report.executed, "shadows.spot_atlas"));
+    CHECK(has(f.report.executed, "shadows.cascade"));
 }

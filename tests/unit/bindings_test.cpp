@@ -26,6 +26,9 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kShadowUniforms == BINDING_SHADOW_UNIFORMS);
     CHECK(binding::kShadowMap == BINDING_SHADOW_MAP);
     CHECK(binding::kShadowDepth == BINDING_SHADOW_DEPTH);
+    CHECK(binding::kSpotShadowUniforms == BINDING_SPOT_SHADOW_UNIFORMS);
+    CHECK(binding::kSpotShadowMap == BINDING_SPOT_SHADOW_MAP);
+    CHECK(binding::kSpotShadowDepth == BINDING_SPOT_SHADOW_DEPTH);
     CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
     CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);
 }
