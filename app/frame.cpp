@@ -203,7 +203,8 @@ void addPresentPass(FrameGraph& graph, const RenderContext& rc, TextureHandle di
 }  // namespace
 
 SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
-                                                        const ViewParams* fit_view, FrameReport& report) {
+                                                        const ViewParams* fit_view, FrameReport& report,
+                                                        const ShadowCaster& extra) {
     const glm::dmat4 view_proj(rc.matrices.view_proj);
     const double error_scale = screenErrorScale(rc.view.fov_deg, rc.view.height);
     const glm::dvec3 sun = sunDirection(s.sky);
@@ -220,7 +221,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
-    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain);
+    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain, extra);
     const SunShadowStats& st = sun_shadows_->stats();
     report.counters["shadows.cascades"] = double(st.cascades);
     report.counters["shadows.drawn"] = double(st.drawn);
@@ -255,6 +256,19 @@ bool FrameRenderer::prepareSpotShadows(const RenderContext& rc, const Settings& 
     return false;
 }
 
+SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                                 const ShadowCaster& extra, FrameReport& report) {
+    SpotShadowInput input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    local_lights_->setShadowSlots(*spot_shadows_);
+    const SpotShadowStats& st = spot_shadows_->stats();
+    report.counters["shadows.spot_candidates"] = double(st.candidates);
+    report.counters["shadows.spot_shadowed"] = double(st.shadowed);
+    report.counters["shadows.spot_unshadowed"] = double(st.unshadowed);
+    report.counters["shadows.spot_caster_instances"] = double(st.caster_instances);
+    report.counters["shadows.spot_memory_bytes"] = double(st.memory_bytes);
+    return input;
+}
+
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
     RenderContext rc = context(view, s, time_s);
     FrameGraph graph;
@@ -269,19 +283,24 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     const bool local_lights = terrain && !shadow_view && prepareLocalLights(rc, s, report);
     if (!terrain) local_lights_.reset();
     if (!(local_lights && prepareSpotShadows(rc, s))) spot_shadows_.reset();
+    // Grass is culled first: the shadow passes draw the same blades.
+    BufferHandle blades;
+    if (grass) {
+        if (!grass_) grass_ = std::make_unique<Grass>();
+        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
+        if (reach) blades = grass_->addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass);
+        report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
+    } else {
+        grass_.reset();  // a disabled feature keeps nothing allocated
+    }
+    ShadowCaster grass_caster;
+    if (blades.valid() && s.grass.cast_shadows)
+        grass_caster = {blades, double(s.grass.radius_m),
+                        [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }};
     SpotShadowInput spot_input;
     if (terrain) {
-        shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report);
-        if (spot_shadows_) {
-            spot_input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain);
-            local_lights_->setShadowSlots(*spot_shadows_);
-            const SpotShadowStats& st = spot_shadows_->stats();
-            report.counters["shadows.spot_candidates"] = double(st.candidates);
-            report.counters["shadows.spot_shadowed"] = double(st.shadowed);
-            report.counters["shadows.spot_unshadowed"] = double(st.unshadowed);
-            report.counters["shadows.spot_caster_instances"] = double(st.caster_instances);
-            report.counters["shadows.spot_memory_bytes"] = double(st.memory_bytes);
-        }
+        shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report, grass_caster);
+        if (spot_shadows_) spot_input = addSpotShadowPass(graph, rc, s, grass_caster, report);
         // Beyond the blades the terrain's grass band takes their mean colour.
         const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
         terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
@@ -293,14 +312,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         report.counters["terrain.draws"] = double(c.draws);
         report.counters["terrain.select_ms"] = c.select_ms;
     }
-    if (grass) {
-        if (!grass_) grass_ = std::make_unique<Grass>();
-        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
-        if (reach) grass_->addPasses(graph, rc, *terrain_, s.terrain, s.grass, scene, counters_, request.count_grass);
-        report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
-    } else {
-        grass_.reset();  // a disabled feature keeps nothing allocated
-    }
+    if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);
     // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
     const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
     if (clouds) {

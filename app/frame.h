@@ -92,13 +92,17 @@ public:
 
 private:
     // Selects the terrain (widened for shadow casters when the sun casts shadows) and adds the
-    // "shadows.cascadeN" passes; returns what lighting.sun samples (invalid: no sun shadows).
+    // "shadows.cascadeN" passes (drawing `extra`, the grass, too); returns what lighting.sun
+    // samples (invalid: no sun shadows).
     SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
-                                             const ViewParams* fit_view, FrameReport& report);
+                                             const ViewParams* fit_view, FrameReport& report, const ShadowCaster& extra);
     // This frame's local lights (false: none can light a visible point, add no light pass).
     bool prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report);
     // The shadowed spot lights among them (false: none; then spot_shadows_ is reset).
     bool prepareSpotShadows(const RenderContext& rc, const Settings& s);
+    // "shadows.spot_atlas" (terrain and `extra`), the lights' tiles and the shadows.spot_* counters.
+    SpotShadowInput addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                      const ShadowCaster& extra, FrameReport& report);
 
     ShaderLibrary shaders_;
     GlDevice device_;

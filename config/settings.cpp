@@ -120,6 +120,7 @@ void describe(SettingsVisitor& v, GrassSettings& s) {
     v.field({"sway_strength", "rad", "per-blade oscillation amplitude"}, s.sway_strength, 0.0f, 1.0f);
     v.field({"sway_frequency_hz", "Hz", "per-blade oscillation frequency (varied +-25% per blade)"}, s.sway_frequency_hz, 0.0f, 20.0f);
     v.field({"far_color_strength", "", "beyond the blades the terrain's grass band takes the blades' colour by this much"}, s.far_color_strength, 0.0f, 1.0f);
+    v.field({"cast_shadows", "", "blades cast sun and spot light shadows (drawn into the shadow maps)"}, s.cast_shadows);
 }
 
 void describe(SettingsVisitor& v, SkySettings& s) {

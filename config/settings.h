@@ -122,6 +122,7 @@ struct GrassSettings {
     float sway_strength = 0.08f;      //!< rad, per-blade oscillation amplitude, 0..1
     float sway_frequency_hz = 0.9f;   //!< Hz, per-blade oscillation (varied +-25% per blade), 0..20
     float far_color_strength = 0.85f; //!< terrain grass band blended toward the blades' colour beyond the fade, 0..1
+    bool cast_shadows = true;         //!< blades cast into the sun cascades and the spot shadow atlas
 };
 
 //! How the sun's direction is given: explicit angles, or latitude, day of year and solar time.

@@ -23,7 +23,7 @@ int farSegments(int near_segments) { return std::max(1, (near_segments + 1) / 2)
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> grassPrograms() {
-    return {{"grass/shaders/grass_cull.glsl", {}}, {"grass/shaders/grass.glsl", {}}};
+    return {{"grass/shaders/grass_cull.glsl", {}}, {"grass/shaders/grass.glsl", {}}, {"grass/shaders/grass.glsl", {"SHADOW_PASS"}}};
 }
 
 bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const GrassSettings& s, const glm::dvec3& eye) {
@@ -75,8 +75,8 @@ void Grass::allocate(const GrassSettings& s) {
     allocated_ = true;
 }
 
-void Grass::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
-                      const GrassSettings& s, SceneTargets& targets, CounterReadback& counters, bool count) {
+BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
+                                const GrassSettings& s, CounterReadback& counters, bool count) {
     allocate(s);
     const BufferHandle imported = graph.importBuffer("grass.blades", BufferDesc{std::size_t(blades_.size())}, blades_.id());
 
@@ -140,14 +140,40 @@ void Grass::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terra
             if (groups > 0) glDispatchCompute(GLuint(gx), GLuint(gy), 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
         });
+    return cull.blades;
+}
 
+void Grass::drawLists(GLuint program, const GrassSettings& s) const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
+    glDisable(GL_CULL_FACE);  // blades are two-sided
+    const int segments[2] = {s.segments, farSegments(s.segments)};
+    const std::uint32_t first[2] = {0, near_capacity_};
+    for (int list = 0; list < 2; ++list) {
+        glProgramUniform1i(program, 0, segments[list]);
+        glProgramUniform1ui(program, 1, first[list]);
+        glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(std::uintptr_t(list) * sizeof(DrawCommand)));
+    }
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
+void Grass::drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const {
+    GLuint program = rc.shaders.get("grass/shaders/grass.glsl", {"SHADOW_PASS"})->id();
+    glUseProgram(program);
+    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
+    glBindVertexArray(rc.empty_vao);
+    drawLists(program, s);
+}
+
+void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
+                           SceneTargets& targets) {
     struct DrawData {
         BufferHandle blades;
         SceneTargets t;
     };
     const DrawData& d = graph.addPass<DrawData>("grass.gbuffer",
         [&](PassBuilder& b, DrawData& data) {
-            data.blades = b.read(cull.blades);
+            data.blades = b.read(blades);
             data.t = targets;
             data.t.hdr = b.write(targets.hdr);
             data.t.albedo = b.write(targets.albedo);
@@ -162,21 +188,11 @@ void Grass::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terra
             GLuint program = rc.shaders.get("grass/shaders/grass.glsl")->id();
             glUseProgram(program);
             glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, 0.0f);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
             glBindVertexArray(rc.empty_vao);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
-            glDisable(GL_CULL_FACE);  // blades are two-sided
-            const int segments[2] = {s.segments, farSegments(s.segments)};
-            const std::uint32_t first[2] = {0, near_capacity_};
-            for (int list = 0; list < 2; ++list) {
-                glProgramUniform1i(program, 0, segments[list]);
-                glProgramUniform1ui(program, 1, first[list]);
-                glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(std::uintptr_t(list) * sizeof(DrawCommand)));
-            }
-            glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+            drawLists(program, s);
             glDisable(GL_DEPTH_TEST);
         });
     targets = d.t;

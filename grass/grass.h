@@ -24,10 +24,16 @@ class Terrain;
 
 class Grass {
 public:
-    // Adds grass.cull and grass.gbuffer (writing targets' G-buffer). count: add the blades
-    // drawn to the GPU counter "grass.blades" (CounterReadback).
-    void addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
-                   const GrassSettings& s, SceneTargets& targets, CounterReadback& counters, bool count);
+    // "grass.cull": this frame's blades (before the shadow passes that draw them); returns the
+    // blade list. count: add the blades drawn to the GPU counter "grass.blades" (CounterReadback).
+    BufferHandle addCullPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
+                             const GrassSettings& s, CounterReadback& counters, bool count);
+    // "grass.gbuffer": the culled blades into targets' G-buffer.
+    void addGbufferPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
+                        SceneTargets& targets);
+    // The culled blades depth-only (grass.glsl SHADOW_PASS) through matrix (camera-relative world
+    // -> clip), into the bound target; for shadow passes that read the blade list.
+    void drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const;
 
     const GrassLayout& layout() const { return layout_; }
     std::int64_t considered() const { return layout_.candidates(); }  // candidates per frame
@@ -40,6 +46,7 @@ public:
 
 private:
     void allocate(const GrassSettings& s);
+    void drawLists(GLuint program, const GrassSettings& s) const;  // both indirect draws with program
 
     GrassLayout layout_;
     GrassSettings sized_for_{};      // the settings the buffers were made for

@@ -86,6 +86,7 @@ void describeLight(SettingsVisitor& v, Light& l) {
     v.field({"radius", "m", "influence radius; 0 reaches nothing"}, l.radius_m, 0.0f, 1.0e5f);
     v.field({"color", "", "linear RGB"}, l.color, 0.0f, 1.0e3f);
     v.field({"intensity", "", "irradiance scale at 1 m"}, l.intensity, 0.0f, 1.0e7f);
+    v.field({"ground", "m", "height above the terrain; -1 = the position's y"}, l.ground_m, -1.0f, 1.0e4f);
     if (l.type != LightType::Spot) return;
     v.field({"direction", "", "spot axis, not all zero"}, l.direction, -1.0e6f, 1.0e6f);
     v.field({"cone_inner", "deg", "half-angle of full intensity, at most cone_outer"}, l.inner_deg, 0.0f, 180.0f);
@@ -138,7 +139,7 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     s.animation.seed = std::uint32_t(seed);
     NamedList lights(s.lights, &NamedLight::light, parseLightSpec, formatLightSpec, describeLight);
     v.list({"light", "", "a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
-                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on)"},
+                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on), ground H (m above the terrain)"},
            lights);
     NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
     v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "
@@ -176,13 +177,16 @@ std::string parseLightSpec(std::string_view text, Light& out) {
             if (v[0] > v[1]) return "cone: inner angle " + str(v[0]) + " is wider than outer angle " + str(v[1]);
             out.inner_deg = float(v[0]);
             out.outer_deg = float(v[1]);
+        } else if (key == "ground") {
+            if (!r.numbers(key, v, 1, 0.0, 1e4, error)) return error;
+            out.ground_m = float(v[0]);
         } else if (key == "shadow") {
             std::string_view value = r.word();
             if (value != "on" && value != "off")
                 return "shadow: expected 'on' or 'off', got '" + std::string(value) + "'";
             out.shadow = value == "on";
         } else {
-            return "unknown word '" + std::string(key) + "' (expected radius, color, intensity, direction, cone or shadow)";
+            return "unknown word '" + std::string(key) + "' (expected radius, color, intensity, direction, cone, shadow or ground)";
         }
     }
     return {};
@@ -248,6 +252,7 @@ std::string formatLightSpec(const Light& l) {
         s += "  cone " + str(l.inner_deg) + " " + str(l.outer_deg);
     }
     if (!l.shadow) s += "  shadow off";
+    if (l.ground_m >= 0.0f) s += "  ground " + str(l.ground_m);
     return s;
 }
 

@@ -45,6 +45,7 @@ struct Light {
     float inner_deg = 20.0f;           // deg, spot half-angle of full intensity, [0, outer_deg]
     float outer_deg = 30.0f;           // deg, spot half-angle where the light ends, [0, 180]
     bool shadow = true;                // spot: may cast a shadow ([shadows] spot_*); point lights cast none
+    float ground_m = -1.0f;            // m: >= 0 puts the light this high above the terrain (y is then ignored); < 0: off
 
     bool operator==(const Light&) const = default;
 };

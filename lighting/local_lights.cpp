@@ -48,7 +48,10 @@ const char* methodDefine(LightCulling m) {
 
 std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground) {
     std::vector<Light> out;
-    for (const NamedLight& l : s.lights) out.push_back(l.light);
+    for (const NamedLight& l : s.lights) {
+        out.push_back(l.light);
+        if (l.light.ground_m >= 0.0f && ground) out.back().position.y = ground(l.light.position.x, l.light.position.z) + l.light.ground_m;
+    }
     for (const NamedLightVolume& v : s.volumes) {
         const std::size_t first = out.size();
         generateLights(v.volume, out);

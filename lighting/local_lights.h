@@ -49,7 +49,8 @@ namespace vista {
 using GroundHeight = std::function<double(double x_m, double z_m)>;
 
 // The lights of [lights]: explicit entries, then each volume's; volumes with `ground` put their
-// lights that high above ground(x, z) (above the box's lower y without a ground function).
+// lights that high above ground(x, z) (above the box's lower y without a ground function), and
+// so do explicit lights with `ground` (they keep their y without a ground function).
 std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground);
 
 // Longest list a tile or cluster keeps (the culling pass's shared-memory list).

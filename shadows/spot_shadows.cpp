@@ -125,7 +125,7 @@ void SpotShadows::allocate(int resolution) {
 }
 
 SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts) {
+                                     const TerrainSettings& ts, const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     tiles_per_side_ = spotAtlasTilesPerSide(std::min(s.spot_max_lights, kMaxSpotShadows));
@@ -164,8 +164,11 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
         TextureHandle atlas;
     };
     const Data& d = graph.addPass<Data>("shadows.spot_atlas",
-        [&](PassBuilder& b, Data& data) { data.atlas = b.write(atlas); },
-        [this, &rc, terrain, &ts, tile](const Data&, PassContext&) {
+        [&](PassBuilder& b, Data& data) {
+            data.atlas = b.write(atlas);
+            if (extra.valid()) b.read(extra.reads);
+        },
+        [this, &rc, terrain, &ts, tile, extra](const Data&, PassContext&) {
             const int res = settings_.spot_atlas_resolution;
             bindTarget(atlas_fb_.id(), res, res);
             glDepthMask(GL_TRUE);
@@ -178,13 +181,22 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glPolygonOffset(-settings_.spot_slope_bias, 0.0f);  // away from the light is smaller depth
             GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
             glUseProgram(program);
-            terrain->drawShadowLists(ts, program, instances_, [&](std::size_t k) {
+            auto bindTile = [&](std::size_t k) {
                 const int x = int(k) % tiles_per_side_ * tile, y = int(k) / tiles_per_side_ * tile;
                 glViewport(x, y, tile, tile);
                 glScissor(x, y, tile, tile);
+            };
+            terrain->drawShadowLists(ts, program, instances_, [&](std::size_t k) {
+                bindTile(k);
                 const glm::mat4 m(views_[k].view_proj);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
             });
+            if (extra.valid())
+                for (std::size_t k = 0; k < slots_.size(); ++k) {
+                    if (slots_[k] < 0) continue;
+                    bindTile(k);
+                    extra.draw(glm::mat4(views_[k].view_proj));
+                }
             glDisable(GL_POLYGON_OFFSET_FILL);
             glDisable(GL_SCISSOR_TEST);
             glDisable(GL_DEPTH_TEST);

@@ -24,6 +24,7 @@
 #include "renderer/camera.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
+#include "shadows/shadow_caster.h"
 #include "terrain/cdlod.h"
 
 #include <glm/mat4x4.hpp>
@@ -94,8 +95,10 @@ public:
     const std::vector<SpotShadowPick>& picks() const { return picks_; }
 
     // "shadows.spot_atlas": every picked light's tile (terrain casters from the current
-    // selection). Lights with no caster in their frustum keep slot -1 (see slotOf()).
-    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts);
+    // selection, then `extra`, e.g. grass, when valid). Lights with no terrain in their frustum
+    // keep slot -1 (see slotOf()).
+    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+                            const ShadowCaster& extra = {});
     // After addPass: the tile of pick k, or -1 when nothing casts into it (read as lit).
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const SpotShadowStats& stats() const { return stats_; }

@@ -99,7 +99,7 @@ void SunShadows::allocate(int resolution, int layers) {
 }
 
 SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts) {
+                                     const TerrainSettings& ts, const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const int count = int(cascades_.size());
     stats_ = {};
@@ -140,9 +140,13 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     };
     for (int i = 0; i < count; ++i) {
         if (u.info[i].x == 0.0f) continue;  // a cascade with nothing to draw is skipped
+        const bool draw_extra = extra.valid() && cascades_[std::size_t(i)].near_m < extra.reach_m;
         const Data& d = graph.addPass<Data>("shadows.cascade" + std::to_string(i),
-            [&](PassBuilder& b, Data& data) { data.map = b.write(map); },
-            [this, &rc, terrain, &ts, i](const Data&, PassContext&) {
+            [&](PassBuilder& b, Data& data) {
+                data.map = b.write(map);
+                if (draw_extra) b.read(extra.reads);
+            },
+            [this, &rc, terrain, &ts, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
                 const int res = settings_.resolution;
                 bindTarget(layer_fbs_[std::size_t(i)].id(), res, res);
                 glDepthMask(GL_TRUE);
@@ -158,6 +162,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
                 terrain->drawShadow(ts, program, instances_[std::size_t(i)], i);
+                if (extra.valid()) extra.draw(m);
                 glDisable(GL_POLYGON_OFFSET_FILL);
                 glDisable(GL_DEPTH_CLAMP);
                 glDisable(GL_DEPTH_TEST);

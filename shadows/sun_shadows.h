@@ -8,6 +8,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "shadows/cascades.h"
+#include "shadows/shadow_caster.h"
 #include "terrain/cdlod.h"
 
 #include <array>
@@ -53,8 +54,10 @@ public:
                  const ViewParams& fit_view);
     std::array<glm::dvec4, 6> casterFrustum(const glm::dmat4& view_proj) const;
 
-    // One "shadows.cascadeN" pass per cascade with casters in the terrain's selection.
-    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts);
+    // One "shadows.cascadeN" pass per cascade with casters in the terrain's selection; `extra`
+    // (grass; may be invalid) is drawn too into the cascades that start within its reach.
+    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+                             const ShadowCaster& extra = {});
 
     const std::vector<ShadowCascade>& cascades() const { return cascades_; }
     const LightBasis& light() const { return light_; }

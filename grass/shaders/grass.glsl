@@ -4,7 +4,8 @@
 // the bend direction by an angle growing along the blade, so bending keeps the blade's length
 // (grass_placement.cpp grassBladePoint is the CPU mirror). Writes the G-buffer like the
 // terrain; the shading normal is blended toward the terrain normal so a meadow seen from
-// above shades like the ground it covers.
+// above shades like the ground it covers. SHADOW_PASS: the same blades depth-only into a shadow
+// view (sun cascades, spot shadow atlas).
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
 #include "grass_common.glsl"
@@ -15,6 +16,10 @@ layout(location = 1) uniform uint u_first;       // index of this draw's first b
 layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, unused
 
 #ifdef VERTEX_SHADER
+#ifdef SHADOW_PASS
+// A shadow view (sun cascade or spot tile): camera-relative world -> clip.
+layout(location = 16) uniform mat4 u_shadow_matrix;
+#endif
 out vec3 v_normal;           // blade normal (world, one side)
 flat out vec3 v_ground;      // terrain normal
 out vec3 v_albedo;
@@ -52,11 +57,19 @@ void main() {
     v_ground = safeNormalize(unpackSnorm4x8(b.look.y).xyz);
     vec3 tip_albedo = unpackUnorm4x8(b.look.x).rgb;
     v_albedo = tip_albedo * tip_albedo * mix(1.0 - u_look.x, 1.0, s);
+#ifdef SHADOW_PASS
+    gl_Position = u_shadow_matrix * vec4(b.root_width.xyz + p, 1.0);
+#else
     gl_Position = u_view_proj * vec4(b.root_width.xyz + p, 1.0);
+#endif
 }
 #endif
 
-#ifdef FRAGMENT_SHADER
+#if defined(FRAGMENT_SHADER) && defined(SHADOW_PASS)
+void main() {}  // depth only
+#endif
+
+#if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS)
 in vec3 v_normal;
 flat in vec3 v_ground;
 in vec3 v_albedo;

@@ -6,6 +6,7 @@
 #include "app/scene.h"
 #include "renderer_fixture.h"
 #include "grass/grass.h"
+#include "renderer/half.h"
 #include "terrain/heightmap.h"
 #include "terrain/material_weights.h"
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <tuple>
 
@@ -127,8 +129,9 @@ TEST_CASE("gl: grass passes run after the terrain with finite output; off, no pa
     REQUIRE(contains(ex, "grass.cull"));
     REQUIRE(contains(ex, "grass.gbuffer"));
     auto at = [&](const char* name) { return std::find(ex.begin(), ex.end(), name) - ex.begin(); };
-    CHECK(at("terrain.gbuffer") < at("grass.cull"));
-    CHECK(at("grass.cull") < at("grass.gbuffer"));
+    CHECK(at("grass.cull") < at("terrain.gbuffer"));  // culled first: the shadow passes draw the same blades
+    if (contains(ex, "shadows.cascade0")) CHECK(at("grass.cull") < at("shadows.cascade0"));
+    CHECK(at("terrain.gbuffer") < at("grass.gbuffer"));
     CHECK(at("grass.gbuffer") < at("lighting.sun"));
     CHECK(on.counted);
     CHECK(on.drawn == on.blades.size());
@@ -262,4 +265,52 @@ TEST_CASE("gl: grass grows only where the terrain is grass, and is the same afte
     CHECK(elsewhere.drawn > 200);
     CHECK(places(first, view) == places(back, view));
     CHECK(places(first, view) != places(elsewhere, away));
+}
+
+TEST_CASE("gl: blades cast into the sun cascades and the spot shadow atlas (cast_shadows), and not when off") {
+    test::TempDir dir("grass-shadows");
+    auto meadow = writeMap(dir, "meadow.png", [](int, int) { return 0.3f; });
+    Settings s = grassScene(meadow);
+    s.grass.blade_height_m = 1.2f;
+    s.grass.density = 16.0f;
+    s.sky.sun_elevation_deg = 20.0f;
+    const ViewParams view = meadowView({}, 0.3 * kHeightScale);
+    auto meanLuminance = [&](const Settings& settings) {
+        FrameRenderer& r = renderer();
+        REQUIRE(r.prepare(settings).empty());
+        std::vector<std::uint16_t> hdr;
+        FrameRequest request;
+        request.capture_hdr = &hdr;
+        FrameReport report = r.render(settings, view, 3.0, request);
+        CHECK(contains(report.executed, "grass.gbuffer"));
+        double sum = 0.0;
+        for (std::size_t i = 0; i < hdr.size(); i += 4)
+            sum += 0.2126 * halfToFloat(hdr[i]) + 0.7152 * halfToFloat(hdr[i + 1]) + 0.0722 * halfToFloat(hdr[i + 2]);
+        CHECK(std::isfinite(sum));
+        return std::make_pair(sum / double(hdr.size() / 4), report);
+    };
+    // The sun: blades shade the ground and each other.
+    auto [sun_on, sun_report] = meanLuminance(s);
+    CHECK(contains(sun_report.executed, "shadows.cascade0"));
+    s.grass.cast_shadows = false;
+    const double sun_off = meanLuminance(s).first;
+    CHECK(sun_on < 0.97 * sun_off);
+    // A street light over the meadow at night.
+    s.sky.sun_elevation_deg = -30.0f;
+    s.lights.enabled = true;
+    Light l;
+    l.type = LightType::Spot;
+    l.position = view.position + glm::dvec3(12.0, 2.5, -4.0);
+    l.direction = {0.0f, -1.0f, 0.0f};
+    l.radius_m = 20.0f;
+    l.intensity = 40.0f;
+    l.inner_deg = 50.0f;
+    l.outer_deg = 70.0f;
+    s.lights.lights = {{"lamp", l}};
+    const double spot_off = meanLuminance(s).first;
+    s.grass.cast_shadows = true;
+    auto [spot_on, spot_report] = meanLuminance(s);
+    CHECK(contains(spot_report.executed, "shadows.spot_atlas"));
+    CHECK(spot_on < 0.97 * spot_off);
+    std::printf("grass shadows: mean luminance sun %.4g (off %.4g), spot %.4g (off %.4g)\n", sun_on, sun_off, spot_on, spot_off);
 }

@@ -104,7 +104,7 @@ TEST_CASE("lights config: bad values name the key, the bad token and what is acc
     CHECK(oneError("[lights]\n\nlight.a = point 0 0 0  radius -1\n", s, 3) ==
           "[lights] light.a = point 0 0 0  radius -1 is not accepted: radius: -1 is outside [0, 100000]");
     CHECK(contains(oneError("[lights]\nlight.a = point 0 0 0 glow 2\n", s, 2),
-                   "unknown word 'glow' (expected radius, color, intensity, direction, cone or shadow)"));
+                   "unknown word 'glow' (expected radius, color, intensity, direction, cone, shadow or ground)"));
     CHECK(contains(oneError("[lights]\nvolume.v = box 0 0 0 1 1 1 count 10000 10000 10000\n", s, 2),
                    "is not accepted: count: 1000000000000 lights is more than 1000000"));
     CHECK(s.lights.lights.empty());  // a bad entry is not added
@@ -178,7 +178,7 @@ TEST_CASE("lights config: save then load reproduces the lists exactly and in ord
     CHECK(text.find("[sky]") < text.find("[lights]"));
     CHECK(text.find("[lights]") < text.find("[postfx]"));
     CHECK(contains(text, "\n; a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
-                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on) (one light.NAME key per entry, NAME: letters, "
+                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on), ground H (m above the terrain) (one light.NAME key per entry, NAME: letters, "
                          "digits, _)\nlight.lantern = "));
     bool long_line = false;
     for (std::size_t b = 0, e; b < text.size(); b = e + 1) {

@@ -4,6 +4,7 @@
 // grid, the `shadow` key, and a terrain selection that covers the spot views while the view's
 // part stays the view's own selection.
 #include "lighting/light_settings.h"
+#include "lighting/local_lights.h"
 #include "renderer/camera.h"
 #include "shadows/spot_shadows.h"
 #include "terrain/cdlod.h"
@@ -217,4 +218,21 @@ TEST_CASE("spot shadows: a selection widened by spot views keeps the view's own 
             CHECK(spot_culled.nodes.size() == spot_own.nodes.size());
         }
     }
+}
+
+TEST_CASE("spot shadows: street lights with `ground H` stand H above the terrain, and round-trip") {
+    LightsSettings s;
+    Light l;
+    REQUIRE(parseLightSpec("spot 10 999 -20  direction 0 -1 0  ground 6", l).empty());
+    CHECK(l.ground_m == 6.0f);
+    Light back;
+    REQUIRE(parseLightSpec(formatLightSpec(l), back).empty());
+    CHECK(back == l);
+    s.lights = {{"a", l}, {"b", spot({1.0, 2.0, 3.0}, {0, -1, 0}, 10.0f, 30.0f)}};
+    const std::vector<Light> on = collectSceneLights(s, [](double x, double z) { return 0.5 * x - z; });
+    REQUIRE(on.size() == 2);
+    CHECK(on[0].position.y == doctest::Approx(0.5 * 10.0 + 20.0 + 6.0));
+    CHECK(on[1].position.y == 2.0);  // no `ground`: its own y
+    CHECK(collectSceneLights(s, {})[0].position.y == 999.0);  // no terrain: its own y
+    CHECK_FALSE(parseLightSpec("spot 1 2 3  ground -2", l).empty());
 }
