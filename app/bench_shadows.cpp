@@ -1,4 +1,4 @@
-// Sun shadow benchmark (see bench_shadows.h). Every figure comes from [debug] view = shadow,
+// Sun and spot shadow benchmark (see bench_shadows.h). Every figure comes from [debug] view = shadow,
 // which leaves the sun's visibility (0..1) in the HDR target where lighting.sun wrote it.
 #include "app/bench_shadows.h"
 
@@ -67,6 +67,140 @@ double shimmer(FrameRenderer& r, Settings s, const ViewParams& view, bool stabil
         previous = std::move(t);
     }
     return pixels > 0 ? changed / pixels : 0.0;
+}
+
+// Median GPU ms of the passes whose names start with each prefix, over `frames` frames after one warm-up.
+std::vector<double> passCosts(FrameRenderer& r, const Settings& s, const ViewParams& view,
+                              const std::vector<std::string>& prefixes, int frames, std::vector<std::uint16_t>* hdr = nullptr) {
+    std::vector<std::uint16_t> image;
+    FrameRequest request;
+    request.capture_hdr = hdr ? hdr : &image;
+    std::vector<std::vector<double>> ms(prefixes.size());
+    for (int k = 0; k <= frames; ++k) {
+        r.render(s, view, 0.0, request);
+        FrameTiming t = r.timers().collect(true).back();
+        if (k == 0) continue;
+        for (std::size_t i = 0; i < prefixes.size(); ++i) {
+            double sum = 0.0;
+            for (const auto& p : t.passes)
+                if (p.name.rfind(prefixes[i], 0) == 0) sum += p.gpu_ms;
+            ms[i].push_back(sum);
+        }
+    }
+    std::vector<double> out;
+    for (auto& v : ms) out.push_back(median(v));
+    return out;
+}
+
+// Shadowed spot lights at night: a 512 m field with a 4x4 grid of 20 m pillars, a street light
+// 12 m up beside each, pointing down and away from it, so every light casts a pillar's shadow.
+// Costs of the atlas pass and of lights.shade with and without spot shadows per number of
+// shadowed lights, and per filter and atlas size the error of the lit image (relative RMSE of
+// 3x3-box luminance) against a 8192-texel, 64-tap atlas.
+nlohmann::json spotBench(FrameRenderer& r, const Settings& base, int width, int height, double copy_ms, bool reference) {
+    Settings s = base;
+    s.debug.view = DebugView::Final;
+    s.sky.sun_elevation_deg = -20.0f;
+    s.grass.enabled = false;
+    s.lights.enabled = true;
+    s.terrain.size_m = 512.0f;
+    s.terrain.height_scale_m = 20.0f;
+    s.terrain.height_offset_m = 0.0f;
+    s.terrain.origin = glm::dvec3(0.0);
+    const int n = 257;  // 2 m texels
+    Heightmap map{n, n, std::vector<float>(std::size_t(n) * n, 0.0f)};
+    for (int i = 0; i < 16; ++i) {
+        const double px = -120.0 + 80.0 * (i % 4), pz = -120.0 + 80.0 * (i / 4);
+        const int tx = int((px + 256.0) / 2.0), tz = int((pz + 256.0) / 2.0);
+        for (int z = tz - 1; z <= tz + 1; ++z)
+            for (int x = tx - 1; x <= tx + 1; ++x) map.samples[std::size_t(z * n + x)] = 1.0f;
+        Light l;
+        l.type = LightType::Spot;
+        l.position = {px + 8.0, 12.0, pz};
+        l.direction = {-0.6f, -1.0f, 0.0f};  // towards the pillar: its shadow falls across the lit ground behind it
+        l.radius_m = 50.0f;
+        l.intensity = 300.0f;
+        l.inner_deg = 45.0f;
+        l.outer_deg = 60.0f;
+        s.lights.lights.push_back({"spot" + std::to_string(i), l});
+    }
+    InputErrors errors;
+    std::unique_ptr<Terrain> field = Terrain::create(std::move(map), s.terrain, r.shaders(), errors);
+    std::unique_ptr<Terrain> island = r.releaseTerrain();
+    r.adoptTerrain(std::move(field));
+    const ViewParams view{{0.0, 260.0, 260.0}, 0.0, -45.0, 60.0, 0.1, width, height};
+    nlohmann::json out = nlohmann::json::object();
+    nlohmann::json counts = nlohmann::json::array();
+    std::printf("spot lights: 16 street lights beside 20 m pillars, night; cost in copies\n%-10s %12s %12s %14s\n", "shadowed", "spot_atlas",
+                "lights.shade", "shade_unshadowed");
+    Settings off = s;
+    off.shadows.spot_enabled = false;
+    const double shade_off = passCosts(r, off, view, {"lights.shade"}, 3)[0] / copy_ms;
+    for (int n : {1, 4, 16}) {
+        s.shadows.spot_max_lights = n;
+        const auto c = passCosts(r, s, view, {"shadows.spot_atlas", "lights.shade"}, 3);
+        std::printf("%-10d %12.1f %12.1f %14.1f\n", n, c[0] / copy_ms, c[1] / copy_ms, shade_off);
+        counts.push_back({{"shadowed", n}, {"spot_atlas_copies", c[0] / copy_ms}, {"lights_shade_copies", c[1] / copy_ms},
+                          {"lights_shade_unshadowed_copies", shade_off}});
+    }
+    out["cost"] = counts;
+    if (!reference) {
+        r.adoptTerrain(std::move(island));
+        return out;
+    }
+    // Luminance averaged over 3x3 pixels: the kernels' per-pixel rotation is noise meant to be
+    // averaged by the eye, and a 64-tap kernel 16 texels wide (the reference) is itself such
+    // noise; without the box the figure would measure the noise, not the shadow.
+    auto luminance = [width, height](const std::vector<std::uint16_t>& hdr) {
+        std::vector<double> y, box(std::size_t(width) * std::size_t(height), 0.0);
+        for (std::size_t i = 0; i < hdr.size(); i += 4)
+            y.push_back(0.2126 * halfToFloat(hdr[i]) + 0.7152 * halfToFloat(hdr[i + 1]) + 0.0722 * halfToFloat(hdr[i + 2]));
+        for (int py = 0; py < height; ++py)
+            for (int px = 0; px < width; ++px) {
+                double sum = 0.0;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        sum += y[std::size_t(std::clamp(py + dy, 0, height - 1)) * std::size_t(width) +
+                                 std::size_t(std::clamp(px + dx, 0, width - 1))];
+                box[std::size_t(py) * std::size_t(width) + std::size_t(px)] = sum / 9.0;
+            }
+        return box;
+    };
+    const char* names[] = {"hard", "pcf", "pcss"};
+    nlohmann::json rows = nlohmann::json::array();
+    std::printf("%-6s %10s %12s %12s\n", "filter", "atlas", "rel_rmse", "atlas_copies");
+    for (ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
+        auto configure = [&](Settings& c, int resolution, int taps) {  // kernels keep their size in metres
+            c.shadows.spot_filter = filter;
+            c.shadows.spot_atlas_resolution = resolution;
+            c.shadows.spot_taps = taps;
+            c.shadows.spot_filter_radius_texels = std::min(base.shadows.spot_filter_radius_texels * float(resolution) / 2048.0f, 16.0f);
+            c.shadows.spot_max_penumbra_texels = std::min(base.shadows.spot_max_penumbra_texels * float(resolution) / 2048.0f, 64.0f);
+        };
+        Settings ref = s;
+        configure(ref, 8192, 64);
+        std::vector<std::uint16_t> hdr;
+        passCosts(r, ref, view, {}, 1, &hdr);
+        const std::vector<double> want = luminance(hdr);
+        double mean = 0.0;
+        for (double v : want) mean += v / double(want.size());
+        for (int resolution : {1024, 2048, 4096}) {
+            Settings c = s;
+            configure(c, resolution, base.shadows.spot_taps);
+            const double ms = passCosts(r, c, view, {"shadows.spot_atlas"}, 3, &hdr)[0];
+            const std::vector<double> got = luminance(hdr);
+            double sum = 0.0;
+            for (std::size_t i = 0; i < got.size(); ++i) sum += (got[i] - want[i]) * (got[i] - want[i]);
+            const double rel = mean > 0.0 ? std::sqrt(sum / double(got.size())) / mean : 0.0;
+            std::printf("%-6s %10d %12.4f %12.1f\n", names[int(filter)], resolution, rel, ms / copy_ms);
+            rows.push_back({{"filter", names[int(filter)]}, {"atlas", resolution}, {"relative_rmse", rel},
+                            {"atlas_copies", ms / copy_ms}});
+        }
+    }
+    out["error_vs_reference"] = rows;
+    out["reference"] = "same filter, 8192-texel atlas, 64 taps, same kernel size in metres; error of the lit image's luminance (3x3 box) over its mean";
+    r.adoptTerrain(std::move(island));
+    return out;
 }
 
 }  // namespace
@@ -191,6 +325,8 @@ int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
         out["error_vs_reference"] = rows;
         out["reference"] = "same filter at 8192 texels per cascade, 64 taps, same kernel world size";
     }
+
+    out["spot"] = spotBench(renderer, base, o.width, o.height, copy_ms, o.reference);
 
     // Whole frames, final image, shadows on and off (the default scene's settings otherwise).
     {
