@@ -24,16 +24,18 @@ constexpr std::array<PostKnobs, 5> kPost{{
 
 // Sun shadows: texels per cascade and filter taps (bench shadows: error halves from 1024 to
 // 4096 texels at 2-3x the cost; the reference is the bench's 4096-texel row with 64 taps).
+// Spot shadows: atlas side and taps (bench shadows: hard error falls 7x from 1024 to 4096 at
+// 2.6x the atlas cost; the reference is the largest atlas with 64 taps).
 struct ShadowKnobs {
-    int resolution, pcf_taps;
+    int resolution, pcf_taps, spot_atlas, spot_taps;
 };
 
 constexpr std::array<ShadowKnobs, 5> kShadow{{
-    {512, 4},    // low
-    {1024, 8},   // medium
-    {1024, 12},  // high (the defaults)
-    {2048, 16},  // ultra
-    {4096, 64},  // reference: the ranges' maxima
+    {512, 4, 1024, 4},     // low
+    {1024, 8, 1024, 8},    // medium
+    {1024, 12, 2048, 16},  // high (the defaults)
+    {2048, 16, 4096, 16},  // ultra
+    {4096, 64, 8192, 64},  // reference: the ranges' maxima
 }};
 
 constexpr std::array<const char*, 5> kNames{"low", "medium", "high", "ultra", "reference"};
@@ -51,6 +53,8 @@ void applyQualityPreset(Settings& s, QualityPreset preset) {
     const ShadowKnobs& sh = kShadow[std::size_t(preset)];
     s.shadows.resolution = sh.resolution;
     s.shadows.pcf_taps = sh.pcf_taps;
+    s.shadows.spot_atlas_resolution = sh.spot_atlas;
+    s.shadows.spot_taps = sh.spot_taps;
 }
 
 std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {

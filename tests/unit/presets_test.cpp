@@ -27,6 +27,8 @@ TEST_CASE("presets: each is valid, high is the default, and the quality knobs gr
             CHECK(s.motion_blur.samples >= previous.motion_blur.samples);
             CHECK(s.shadows.resolution >= previous.shadows.resolution);
             CHECK(s.shadows.pcf_taps >= previous.shadows.pcf_taps);
+            CHECK(s.shadows.spot_atlas_resolution >= previous.shadows.spot_atlas_resolution);
+            CHECK(s.shadows.spot_taps >= previous.shadows.spot_taps);
             CHECK(s.dof.samples + s.motion_blur.samples + s.ssao.directions * s.ssao.steps >
                   previous.dof.samples + previous.motion_blur.samples + previous.ssao.directions * previous.ssao.steps);
         }
