@@ -17,8 +17,9 @@ void main() {
     }
     float depth = textureLod(u_spot_depth, uv, 0.0).r;
     vec2 cell = fract(uv * float(u_tiles));
-    vec2 edge = min(cell, 1.0 - cell) * vec2(textureSize(u_spot_depth, 0)) / float(u_tiles);
+    vec2 edge = min(cell, 1.0 - cell) * u_viewport.xy / float(u_tiles);  // screen pixels to the tile's border
     bool line = min(edge.x, edge.y) < 1.0;
-    o_color = line ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(vec3(sqrt(clamp(depth, 0.0, 1.0))), 1.0);
+    // Reversed-Z depth is about near / distance: its fourth root spreads the metres a lamp lights.
+    o_color = line ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(vec3(pow(clamp(depth, 0.0, 1.0), 0.25)), 1.0);
 }
 #endif
