@@ -161,7 +161,7 @@ void Grass::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terra
             bindTarget(fb, desc.width, desc.height);
             GLuint program = rc.shaders.get("grass/shaders/grass.glsl")->id();
             glUseProgram(program);
-            glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, 0.0f);
+            glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, wetness_);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
             glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
             glBindVertexArray(rc.empty_vao);

@@ -29,6 +29,9 @@ public:
     void addPasses(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
                    const GrassSettings& s, SceneTargets& targets, CounterReadback& counters, bool count);
 
+    // How wet the blades are (0 dry .. 1 soaked: darker, glossier). Set by the weather feature.
+    void setWetness(float wetness) { wetness_ = wetness; }
+
     const GrassLayout& layout() const { return layout_; }
     std::int64_t considered() const { return layout_.candidates(); }  // candidates per frame
     std::size_t memoryBytes() const { return std::size_t(blades_.size()) + std::size_t(draws_.size()); }
@@ -44,6 +47,7 @@ private:
     GrassLayout layout_;
     GrassSettings sized_for_{};      // the settings the buffers were made for
     bool allocated_ = false;
+    float wetness_ = 0.0f;
     std::uint32_t near_capacity_ = 0, far_capacity_ = 0;
     gl::Buffer blades_, draws_;
 };

@@ -25,5 +25,6 @@ constexpr int kShadowMap = 8;      // texture unit: sun cascades, depth compare 
 constexpr int kShadowDepth = 9;    // texture unit: the same cascades, raw depth (PCSS blocker search)
 constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (grass/shaders/grass_common.glsl)
 constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
+constexpr int kWeatherCells = 8;   // shader storage: the rain's visible drop cells (sky/shaders/weather_rain.glsl)
 
 }  // namespace vista::binding
