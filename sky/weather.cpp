@@ -121,6 +121,10 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
     targets.hdr = rain.hdr;
 
     if (snow || !s.splashes || !terrain || s.splash_rate <= 0.0f) return;
+    // No splash within reach when the ground under the camera is farther than splash_radius_m
+    // (flying; a slope nearer than that under a high camera is rare and only loses far splashes).
+    const glm::dvec3 eye = rc.view.position;
+    if (std::abs(eye.y - terrain->heightAt(eye.x, eye.z)) > double(s.splash_radius_m)) return;
     const SplashLayout sl = splashLayout(s);
     const double kept = splashesKept(sl, s);
     const int slots = std::min(sl.slots, int(std::ceil(kept)));

@@ -37,7 +37,8 @@ struct WeatherStats {
 
 class Weather {
 public:
-    // Adds weather.rain (and weather.splash with terrain, rain and splashes on) over
+    // Adds weather.rain (and weather.splash with terrain, rain and splashes on, and the ground
+    // under the camera within splash_radius_m) over
     // targets.hdr. light: the sun and sky irradiance at the camera. count: GPU counters
     // "weather.drops" and "weather.splashes" (drawn, in front of the camera).
     void addPasses(FrameGraph& graph, const RenderContext& rc, const WeatherSettings& s, const CloudsSettings& clouds,

@@ -42,14 +42,17 @@ void main() {
     uint hk = weatherHash(cell.x, cell.y, uint(j), cycle);
     vec2 xz = (vec2(o - u_layout.y) + vec2(weatherRandom(hk, 1u), weatherRandom(hk, 2u)) - u_cycle.xy) * u_look.w;
     float keep = weatherRandom(hk, 3u);
-    float d_xz = length(xz);
     v_uv = vec2(0.0);
     v_look = vec3(0.0);
-    if (float(j) + keep >= u_cycle.w || age >= kLife || d_xz > u_look.y) {
+    if (float(j) + keep >= u_cycle.w || age >= kLife || length(xz) > u_look.y) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;
     }
     float height = u_height_map.y + u_height_map.x * tileSurfaceSample(u_height, (xz - u_map_min) / u_texel_m, u_tiles, u_tile_layer);
+    if (length(vec3(xz.x, height, xz.y)) > u_look.y) {  // the ground is far below (or above) the camera
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
     float a = age / kLife;  // 0..1 over the splash's life
     float size = u_look.x * (0.4 + 0.6 * sqrt(a));
     vec3 base = vec3(xz.x, height, xz.y);
