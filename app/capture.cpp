@@ -96,6 +96,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     request.count_nonfinite = want_stats;
     request.count_lights = want_stats;
     request.count_grass = want_stats;
+    request.count_weather = want_stats;
 
     Progress progress(c.frames, job.write_images ? "capture" : "bench");
     int total = job.warmup_frames + c.frames;

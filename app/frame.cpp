@@ -14,6 +14,8 @@
 #include "sky/atmosphere.h"
 #include "sky/cloud_model.h"
 #include "sky/clouds.h"
+#include "sky/weather.h"
+#include "sky/weather_model.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -56,6 +58,7 @@ std::vector<ProgramKey> allPrograms() {
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -287,6 +290,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     BufferHandle blades;
     if (grass) {
         if (!grass_) grass_ = std::make_unique<Grass>();
+        grass_->setWetness(weatherWetness(s.weather));
         const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
         if (reach) blades = grass_->addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass);
         report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
@@ -305,6 +309,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
         terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
                               glm::vec2(fade_start, s.grass.radius_m));
+        terrain_->setWetness(weatherWetness(s.weather));  // 0 (dry) without rain
         addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
@@ -347,6 +352,18 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
     } else {
         sky_.reset();  // a disabled feature keeps nothing allocated
+    }
+    // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
+    if (s.weather.enabled && !shadow_view) {
+        if (!weather_) weather_ = std::make_unique<Weather>();
+        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+        weather_->addPasses(graph, rc, s.weather, s.clouds, light, terrain ? terrain_.get() : nullptr, s.terrain, scene,
+                            counters_, request.count_weather);
+        report.counters["weather.drop_cells"] = double(weather_->stats().drop_cells);
+        report.counters["weather.drop_candidates"] = double(weather_->stats().drop_candidates);
+        report.counters["weather.splash_candidates"] = double(weather_->stats().splash_candidates);
+    } else {
+        weather_.reset();
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 

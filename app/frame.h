@@ -18,6 +18,7 @@
 #include "sky/atmosphere.h"
 #include "sky/clouds.h"
 #include "sky/sky_lighting.h"
+#include "sky/weather.h"
 #include "terrain/terrain.h"
 
 #include <cstdint>
@@ -44,6 +45,7 @@ struct FrameRequest {
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)
+    bool count_weather = false;                    // weather.drops, weather.splashes (drawn, GPU counters)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
@@ -73,6 +75,7 @@ public:
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
     SpotShadows* spotShadows() { return spot_shadows_.get(); }  // null while no spot light is shadowed
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
+    Weather* weather() { return weather_.get(); }  // null while [weather] is off
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -119,6 +122,7 @@ private:
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
+    std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes

@@ -180,6 +180,7 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         request.present = true;
         request.count_nonfinite = true;
         request.count_grass = true;
+        request.count_weather = true;
         FrameReport report = renderer.render(s, view, time_s, request);
         double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frame_start).count();
 

@@ -187,7 +187,7 @@ void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const Gra
             bindTarget(fb, desc.width, desc.height);
             GLuint program = rc.shaders.get("grass/shaders/grass.glsl")->id();
             glUseProgram(program);
-            glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, 0.0f);
+            glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, wetness_);
             glBindVertexArray(rc.empty_vao);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);

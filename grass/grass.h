@@ -35,6 +35,9 @@ public:
     // -> clip), into the bound target; for shadow passes that read the blade list.
     void drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const;
 
+    // How wet the blades are (0 dry .. 1 soaked: darker, glossier). Set by the weather feature.
+    void setWetness(float wetness) { wetness_ = wetness; }
+
     const GrassLayout& layout() const { return layout_; }
     std::int64_t considered() const { return layout_.candidates(); }  // candidates per frame
     std::size_t memoryBytes() const { return std::size_t(blades_.size()) + std::size_t(draws_.size()); }
@@ -51,6 +54,7 @@ private:
     GrassLayout layout_;
     GrassSettings sized_for_{};      // the settings the buffers were made for
     bool allocated_ = false;
+    float wetness_ = 0.0f;
     std::uint32_t near_capacity_ = 0, far_capacity_ = 0;
     gl::Buffer blades_, draws_;
 };

@@ -265,6 +265,7 @@ void Terrain::draw(const TerrainSettings& s, GLuint program) {
     glProgramUniform1f(program, 13, s.max_error_px);
     glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
     glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
+    glProgramUniform1f(program, 17, wetness_);
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());

@@ -78,6 +78,9 @@ public:
         far_grass_fade_ = fade;
     }
 
+    // How wet the ground is (0 dry .. 1 soaked: darker, glossier). Set by the weather feature.
+    void setWetness(float wetness) { wetness_ = wetness; }
+
     // Draws the current instances with the bound program's terrain uniforms set.
     void draw(const TerrainSettings& s, GLuint program);  // uploads a remade bias first
 
@@ -129,6 +132,7 @@ private:
     glm::dvec3 camera_{0.0};
     glm::vec4 far_grass_{0.0f};
     glm::vec2 far_grass_fade_{0.0f, 1.0f};
+    float wetness_ = 0.0f;
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_;

@@ -13,7 +13,7 @@
 layout(std430, binding = BINDING_GRASS_BLADES) readonly buffer Blades { GrassBlade u_blades[]; };
 layout(location = 0) uniform int u_segments;     // segments of this draw's blades
 layout(location = 1) uniform uint u_first;       // index of this draw's first blade in u_blades
-layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, unused
+layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, wetness (0 dry .. 1)
 
 #ifdef VERTEX_SHADER
 #ifdef SHADOW_PASS
@@ -83,8 +83,9 @@ void main() {
     // back of a blade never turns fully away from the sky.
     n = safeNormalize(mix(n, v_ground, u_look.z));
     Surface surface;
-    surface.albedo = v_albedo;
-    surface.roughness = u_look.y;
+    // Wet blades ([weather] rain): a water film darkens them a little and makes them glossy.
+    surface.albedo = v_albedo * (1.0 - 0.3 * u_look.w);
+    surface.roughness = mix(u_look.y, 0.2, u_look.w);
     surface.normal = n;
     surface.f0 = 0.04;
     surface.lit = true;

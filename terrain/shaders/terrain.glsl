@@ -120,6 +120,7 @@ layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 mor
 layout(location = 8) uniform int u_wireframe;
 layout(location = 14) uniform vec4 u_grass_far;   // grass blades' mean albedo (linear), strength (0: no grass)
 layout(location = 15) uniform vec2 u_grass_fade;  // distance (m) where the far grass colour starts, and is full
+layout(location = 17) uniform float u_wetness;    // rain ([weather]): 0 dry .. 1 soaked
 
 in vec3 v_rel;
 in vec2 v_texel;
@@ -227,6 +228,14 @@ void main() {
         vec3 shading_n = safeNormalize(mix(n, nd, fade));
 
         albedo.rgb = mix(albedo.rgb, u_grass_far.rgb, far_grass);
+        if (u_wetness > 0.0) {
+            // Wet ground: water in the pores darkens soil and sand (less on rock, little on
+            // snow) and a water film makes every layer glossier.
+            float snow = clamp(bands - 2.0, 0.0, 1.0) * (1.0 - rock);
+            float porous = (1.0 - 0.5 * rock) * (1.0 - 0.8 * snow);
+            albedo.rgb *= 1.0 - 0.55 * u_wetness * porous;
+            albedo.a = mix(albedo.a, 0.15, 0.85 * u_wetness);
+        }
 
         Surface surface;
         surface.albedo = albedo.rgb * (1.0 - wire);

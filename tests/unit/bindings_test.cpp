@@ -31,4 +31,5 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kSpotShadowDepth == BINDING_SPOT_SHADOW_DEPTH);
     CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
     CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);
+    CHECK(binding::kWeatherCells == BINDING_WEATHER_CELLS);
 }
