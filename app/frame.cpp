@@ -54,6 +54,7 @@ std::vector<ProgramKey> allPrograms() {
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : waterPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -224,11 +225,11 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     return shadows;
 }
 
-void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+bool FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                         const FrameRequest& request, SceneTargets& scene, FrameReport& report) {
     if (sceneLightCount(s.lights) == 0) {
         local_lights_.reset();  // no local lights: no passes, no buffers
-        return;
+        return false;
     }
     if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
     GroundHeight ground;
@@ -239,12 +240,13 @@ void FrameRenderer::addLocalLightPasses(FrameGraph& graph, const RenderContext& 
     report.counters["lights.visible"] = double(st.visible);
     report.counters["lights.build_ms"] = st.build_ms;
     report.counters["lights.memory_bytes"] = double(st.memory_bytes);
-    if (!any) return;
+    if (!any) return false;
     LightPassOptions options;
     options.count = request.count_lights;
     options.heat = s.debug.view == DebugView::Lights;
-    options.forward = request.forward_lights;
+    options.forward = request.forward_lights || s.water.enabled;  // water.surface shades them forward
     local_lights_->addPasses(graph, rc, scene, counters_, options);
+    return true;
 }
 
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
@@ -257,6 +259,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     SunShadowInput shadows;
     const bool shadow_view = s.debug.view == DebugView::Shadow;
     const bool grass = terrain && s.grass.enabled;
+    bool forward_lights = false;  // the local lights' passes ran: forward passes may shade them
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report);
         // Beyond the blades the terrain's grass band takes their mean colour.
@@ -294,7 +297,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         const bool sunlit = sky.sun_illuminance.x + sky.sun_illuminance.y + sky.sun_illuminance.z > 0.0;
         if (clouds && s.clouds.shadows && sunlit) scene.cloud_shadow = clouds_->addShadowPass(graph, rc, light.cloud_shadow_map);
         addSunLightingPass(graph, rc, light, scene, shadows, s.debug.view);
-        if (!shadow_view) addLocalLightPasses(graph, rc, s, request, scene, report);
+        if (!shadow_view) forward_lights = addLocalLightPasses(graph, rc, s, request, scene, report);
     } else {
         local_lights_.reset();
     }
@@ -303,11 +306,30 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         // [debug] view = shadow shows the HDR target as lighting.sun left it: nothing on top.
     } else if (s.sky.enabled) {
         if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
-        sky_->addPasses(graph, rc, s.sky, scene);
-        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+        sky_->addLutPasses(graph, rc, s.sky);
     } else {
         sky_.reset();  // a disabled feature keeps nothing allocated
     }
+    // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
+    const bool water = s.water.enabled && !shadow_view;
+    if (water) {
+        if (!water_) water_ = std::make_unique<Water>();
+        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+        water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get());
+        water_->addSurfacePasses(graph, rc, scene, sky_.get(), forward_lights ? local_lights_.get() : nullptr);
+        const WaterStats& st = water_->stats();
+        report.counters["water.vertices"] = double(st.vertices);
+        report.counters["water.triangles"] = double(st.triangles);
+        report.counters["water.waves"] = double(st.waves);
+        report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
+    } else if (!s.water.enabled) {
+        water_.reset();  // a disabled feature keeps nothing allocated
+    }
+    if (!shadow_view && s.sky.enabled) {
+        sky_->addScenePasses(graph, rc, s.sky, scene);
+        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+    }
+    if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
     TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth);

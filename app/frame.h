@@ -18,6 +18,7 @@
 #include "sky/clouds.h"
 #include "sky/sky_lighting.h"
 #include "terrain/terrain.h"
+#include "water/water.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -71,6 +72,7 @@ public:
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
+    Water* water() { return water_.get(); }  // null while [water] is off
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -93,7 +95,8 @@ private:
     // "shadows.cascadeN" passes; returns what lighting.sun samples (invalid: no sun shadows).
     SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                              const ViewParams* fit_view, FrameReport& report);
-    void addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s, const FrameRequest& request,
+    // False when no local light pass was added (none in the scene, or none can be seen).
+    bool addLocalLightPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s, const FrameRequest& request,
                              SceneTargets& scene, FrameReport& report);
 
     ShaderLibrary shaders_;
@@ -110,6 +113,7 @@ private:
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
+    std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
