@@ -18,6 +18,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace vista {
 
@@ -315,7 +316,8 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (water) {
         if (!water_) water_ = std::make_unique<Water>();
         const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
-        water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get());
+        const double ground = terrain ? terrain_->heightAt(view.position.x, view.position.z) : std::nan("");
+        water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get(), ground);
         water_->addSurfacePasses(graph, rc, scene, sky_.get(), forward_lights ? local_lights_.get() : nullptr);
         const WaterStats& st = water_->stats();
         report.counters["water.vertices"] = double(st.vertices);

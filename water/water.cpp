@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace vista {
@@ -62,7 +63,7 @@ void Water::buildGrid(int segments, int rings) {
 }
 
 void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
-                    const SkyAtmosphere* sky) {
+                    const SkyAtmosphere* sky, double ground_m) {
     if (!have_waves_ || !sameWaves(s, waves_for_)) {
         waves_ = makeWaves(s);
         waves_for_ = s;
@@ -79,9 +80,11 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
     stats_.vertices = std::uint64_t(grid_.rings + 1) * std::uint64_t(grid_.segments);
     stats_.triangles = 2 * std::uint64_t(grid_.rings) * std::uint64_t(grid_.segments);
     stats_.surface_height_m = double(s.level_m) + evaluateWaves(waves_, eye, time_s).displacement.y;
-    stats_.underwater = view.position.y < stats_.surface_height_m;
+    // Dry land at the eye (ground above every wave there): no water around it.
+    const bool dry = ground_m > double(s.level_m) + waves_.max_height;
+    stats_.underwater = !dry && view.position.y < stats_.surface_height_m;
     // The near plane reaches about near / cos(half the diagonal field of view) from the eye.
-    stats_.near_surface = height < waves_.max_height + 4.0 * view.near_m;
+    stats_.near_surface = !dry && height < waves_.max_height + 4.0 * view.near_m;
 
     Uniforms u{};
     std::vector<glm::vec4> a, b;

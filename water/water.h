@@ -58,8 +58,10 @@ struct WaterStats {
 class Water {
 public:
     // The CPU side of a frame: wave set (rebuilt when the settings change), grid, uniforms.
+    // ground_m: the terrain's height at the eye's x, z (NaN: no terrain); an eye on ground above
+    // the waves' reach is never under water.
     void prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
-                 const SkyAtmosphere* sky);
+                 const SkyAtmosphere* sky, double ground_m);
     // water.copy and water.surface over targets (hdr and depth). sky: this frame's atmosphere
     // after addLutPasses (null: no sky); lights: the local lights whose passes ran this frame
     // (null: none) — their lists must cover forward depths (LightPassOptions::forward).

@@ -158,7 +158,7 @@ TEST_CASE("gl: water output is finite at the water line, under it, at grazing an
     }
 }
 
-TEST_CASE("gl: under water the image turns blue-green; above it the tint pass stays out") {
+TEST_CASE("gl: water seen from under the surface turns the image blue-green; above it the tint pass stays out") {
     test::TempDir dir("water-under");
     Settings s = islandScene(writeIsland(dir));
     const ViewParams below{{-200.0, -5.0, 200.0}, 45.0, 0.0, 60.0, 0.2, 160, 90};
@@ -172,7 +172,7 @@ TEST_CASE("gl: under water the image turns blue-green; above it the tint pass st
     CHECK_FALSE(anyWater(dry.report.executed));
 }
 
-TEST_CASE("gl: screen-space reflection mirrors the island where the sky reflection cannot") {
+TEST_CASE("gl: water's screen-space reflection mirrors the island where the sky reflection cannot") {
     test::TempDir dir("water-ssr");
     Settings s = islandScene(writeIsland(dir));
     const ViewParams view{{-330.0, 6.0, 330.0}, 45.0, -2.0, 60.0, 0.2, 160, 90};
@@ -186,7 +186,7 @@ TEST_CASE("gl: screen-space reflection mirrors the island where the sky reflecti
     CHECK(diff > 0.01 * double(ssr.hdr.size()) * (sky.mean.x + sky.mean.y + sky.mean.z) / 3.0 * 0.1);
 }
 
-TEST_CASE("gl: the GPU's waves equal the CPU's double-precision mirror (also 10,000 km out at 10^7 s)") {
+TEST_CASE("gl: water waves on the GPU equal the CPU's double-precision mirror (also 10,000 km out at 10^7 s)") {
     test::TempDir dir("water-probe");
     Settings s = islandScene(writeIsland(dir));
     s.water.choppiness = 1.5f;
@@ -227,9 +227,9 @@ TEST_CASE("gl: the GPU's waves equal the CPU's double-precision mirror (also 10,
         }
         MESSAGE("GPU vs CPU waves: displacement " << worst_d << " m, normal " << worst_n << ", jacobian " << worst_j
                                                   << ", lost slope variance " << worst_v);
-        CHECK(worst_d < 2e-3);
-        CHECK(worst_n < 2e-3);
-        CHECK(worst_j < 5e-3);
-        CHECK(worst_v < 1e-4);
+        CHECK(worst_d < 1e-4);  // float sums of 24 waves, phases as small camera-relative angles
+        CHECK(worst_n < 5e-4);
+        CHECK(worst_j < 1e-3);
+        CHECK(worst_v < 1e-6);
     }
 }

@@ -68,17 +68,21 @@ ivec2 texelOf(vec2 uv) {
 
 // Screen-space reflection: marches the ray from origin along dir in geometrically growing steps
 // through the opaque depth, refines a crossing by bisection and returns the opaque colour there;
-// weight (0..1) fades hits near the screen's edges and the ray's end (0: nothing found).
+// weight (0..1) fades hits near the screen's edges and the ray's end (0: nothing found). Clip
+// coordinates are linear along the ray: clip(t) = clip0 + t clip_dir.
+vec4 clipAt(vec4 clip0, vec4 clip_dir, float t) { return clip0 + clip_dir * t; }
+
 vec3 traceReflection(vec3 origin, vec3 dir, out float weight) {
     weight = 0.0;
     int steps = int(w_sky_up.w);
     float t_max = w_ground_up.w;
     float t0 = max(0.25, 0.01 * length(origin));
     if (steps <= 0 || t0 >= t_max) return vec3(0.0);
+    vec4 clip0 = u_view_proj * vec4(origin, 1.0), clip_dir = u_view_proj * vec4(dir, 0.0);
     float ratio = pow(t_max / t0, 1.0 / float(steps));
     float t_prev = 0.0, t = t0;
     for (int i = 0; i < steps; ++i) {
-        vec4 clip = u_view_proj * vec4(origin + dir * t, 1.0);
+        vec4 clip = clipAt(clip0, clip_dir, t);
         if (clip.w <= u_near.x) break;
         vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) break;
@@ -88,12 +92,11 @@ vec3 traceReflection(vec3 origin, vec3 dir, out float weight) {
             float lo = t_prev, hi = t;
             for (int j = 0; j < 5; ++j) {
                 float m = 0.5 * (lo + hi);
-                vec4 c = u_view_proj * vec4(origin + dir * m, 1.0);
-                vec2 u2 = c.xy / max(c.w, 1e-6) * 0.5 + 0.5;
-                float d2 = texelFetch(u_scene_depth, texelOf(u2), 0).r;
+                vec4 c = clipAt(clip0, clip_dir, m);
+                float d2 = texelFetch(u_scene_depth, texelOf(c.xy / max(c.w, 1e-6) * 0.5 + 0.5), 0).r;
                 if (d2 > 0.0 && c.w > linearDepth(d2)) hi = m; else lo = m;
             }
-            vec4 c = u_view_proj * vec4(origin + dir * hi, 1.0);
+            vec4 c = clipAt(clip0, clip_dir, hi);
             vec2 hit = clamp(c.xy / max(c.w, 1e-6) * 0.5 + 0.5, vec2(0.0), vec2(1.0));
             vec2 edge = min(hit, 1.0 - hit);
             weight = smoothstep(0.0, 0.06, min(edge.x, edge.y)) * (1.0 - smoothstep(0.8, 1.0, hi / t_max));
@@ -139,9 +142,14 @@ void main() {
         vec3 r = reflect(-v, n);
         r.y = abs(r.y);  // a ray reflected into the water would meet the surface again
         vec3 reflection = skyRadiance(r);
-        float hit;
-        vec3 traced = traceReflection(pos, r, hit);
-        reflection = mix(reflection, traced, hit);
+        // Where the Fresnel factor is near its minimum (looking steeply down) the reflection
+        // hardly shows: no ray march there, faded in over a small range (no seam).
+        float march = smoothstep(0.03, 0.045, fresnel);
+        if (march > 0.0) {
+            float hit;
+            vec3 traced = traceReflection(pos, r, hit);
+            reflection = mix(reflection, traced, hit * march);
+        }
 
         // Refraction: the opaque copy offset by the normal's tilt, more through deeper water;
         // an offset onto something in front of the surface falls back to the pixel itself.
