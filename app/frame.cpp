@@ -318,7 +318,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
         const double ground = terrain ? terrain_->heightAt(view.position.x, view.position.z) : std::nan("");
         water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get(), ground);
-        water_->addSurfacePasses(graph, rc, scene, sky_.get(), forward_lights ? local_lights_.get() : nullptr);
+        water_->addSurfacePasses(graph, rc, scene, sky_.get(), forward_lights ? local_lights_.get() : nullptr, shadows);
         const WaterStats& st = water_->stats();
         report.counters["water.vertices"] = double(st.vertices);
         report.counters["water.triangles"] = double(st.triangles);

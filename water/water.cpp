@@ -108,7 +108,7 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
 }
 
 void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
-                             const LocalLights* lights) {
+                             const LocalLights* lights, const SunShadowInput& shadows) {
     struct CopyData {
         TextureHandle hdr, depth, color, depth_copy;
     };
@@ -132,19 +132,21 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
 
     const bool sky_lut = sky && !sky->frameInSpace();
     struct SurfaceData {
-        TextureHandle color, depth_copy, sky_view, hdr, depth;
+        TextureHandle color, depth_copy, sky_view, shadow, hdr, depth;
     };
     std::vector<std::string> defines;
     if (lights) defines.push_back(lights->define());
+    if (shadows.valid()) defines.push_back("HAS_SUN_SHADOW");
     const SurfaceData& d = graph.addPass<SurfaceData>("water.surface",
         [&](PassBuilder& b, SurfaceData& data) {
             data.color = b.read(c.color);
             data.depth_copy = b.read(c.depth_copy);
             if (sky_lut) data.sky_view = b.read(sky->frameSkyView());
+            if (shadows.valid()) data.shadow = b.read(shadows.map);
             data.hdr = b.write(targets.hdr);
             data.depth = b.write(targets.depth);
         },
-        [this, &rc, sky, lights, defines](const SurfaceData& data, PassContext& ctx) {
+        [this, &rc, sky, lights, defines, shadows](const SurfaceData& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
             glUseProgram(rc.shaders.get(kSurfaceProgram, defines)->id());
@@ -154,6 +156,13 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             glBindTextureUnit(binding::kTex0, ctx.texture(data.color));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.depth_copy));
             if (data.sky_view.valid()) glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));
+            if (data.shadow.valid()) {
+                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, shadows.uniforms);
+                glBindTextureUnit(binding::kShadowMap, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowMap, shadows.compare_sampler);
+                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
+            }
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
@@ -163,6 +172,10 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
                            nullptr);
             glBindVertexArray(rc.empty_vao);
             glDisable(GL_DEPTH_TEST);
+            if (data.shadow.valid()) {
+                glBindSampler(binding::kShadowMap, 0);
+                glBindSampler(binding::kShadowDepth, 0);
+            }
         });
     targets.hdr = d.hdr;
     targets.depth = d.depth;
@@ -195,8 +208,11 @@ void Water::addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneT
 std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
         {kCopyProgram, {}}, {kSurfaceProgram, {}}, {kUnderwaterProgram, {}}};
-    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"})
+    programs.push_back({kSurfaceProgram, {"HAS_SUN_SHADOW"}});
+    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({kSurfaceProgram, {method}});
+        programs.push_back({kSurfaceProgram, {method, "HAS_SUN_SHADOW"}});
+    }
     return programs;
 }
 

@@ -3,8 +3,8 @@
 //   "water.copy"       the opaque HDR and depth, copied (refraction and reflection read them
 //                      while the surface pass writes the targets);
 //   "water.surface"    the displaced ring grid around the camera, shaded forward (reflection,
-//                      refraction with absorption, foam, sun glitter, the sun, the sky and the
-//                      culled local lights), writing colour and depth so that the aerial
+//                      refraction with absorption, foam, sun glitter, the sun through its
+//                      cascaded shadows, the sky and the culled local lights), writing colour and depth so that the aerial
 //                      perspective fogs it and the sky stays behind it;
 // and after the sky, when the camera may be under the surface:
 //   "water.underwater" absorption and scattering between the eye and each pixel.
@@ -16,6 +16,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "shadows/sun_shadows.h"
 #include "water/waves.h"
 
 #include <glm/vec3.hpp>
@@ -65,8 +66,9 @@ public:
     // water.copy and water.surface over targets (hdr and depth). sky: this frame's atmosphere
     // after addLutPasses (null: no sky); lights: the local lights whose passes ran this frame
     // (null: none) — their lists must cover forward depths (LightPassOptions::forward).
+    // shadows: this frame's sun cascades (invalid: none).
     void addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
-                          const LocalLights* lights);
+                          const LocalLights* lights, const SunShadowInput& shadows);
     // water.underwater over targets.hdr when stats().near_surface (after the sky).
     void addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
 

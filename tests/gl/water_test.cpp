@@ -233,3 +233,33 @@ TEST_CASE("gl: water waves on the GPU equal the CPU's double-precision mirror (a
         CHECK(worst_v < 1e-6);
     }
 }
+
+TEST_CASE("gl: water is lit by the culled local lights (forward lists) at night, the same through any culling") {
+    test::TempDir dir("water-lights");
+    Settings s = islandScene(writeIsland(dir));
+    s.sky.sun_elevation_deg = -20.0f;
+    s.exposure.mode = ExposureMode::Manual;
+    const ViewParams view{{-230.0, 12.0, 310.0}, -10.0, -20.0, 60.0, 0.2, 160, 90};
+    // 4 m above the sea, reaching 12 m: the sea floor (10 m down) is out of its reach, so only
+    // the forward-shaded surface can show it.
+    NamedLight lamp{"lamp", {}};
+    REQUIRE(parseLightSpec("point -240 4 270  radius 12  intensity 2000", lamp.light).empty());
+    s.lights.lights.push_back(lamp);
+    s.lights.enabled = false;
+    const Frame dark = render(s, view, 1.0);
+    const double d = dark.mean.x + dark.mean.y + dark.mean.z;
+    s.lights.enabled = true;
+    double first = 0.0;
+    for (LightCulling method : {LightCulling::Naive, LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
+        CAPTURE(int(method));
+        s.lights.culling = method;
+        const Frame lit = render(s, view, 1.0);
+        CHECK(lit.nonfinite == 0);
+        CHECK(contains(lit.report.executed, "water.surface"));
+        const double l = lit.mean.x + lit.mean.y + lit.mean.z;
+        MESSAGE("mean radiance with the lamp " << l << ", without " << d);
+        CHECK(l > 1.5 * d + 1e-4);
+        if (method == LightCulling::Naive) first = l;
+        CHECK(l == doctest::Approx(first).epsilon(0.01));
+    }
+}

@@ -9,7 +9,7 @@
 // opaque copy offset by the normal; L = the water the view ray crosses (from the opaque depth).
 // Seen from below (camera under water), the surface shows the sky (or the scene) refracted
 // through it, or the water by total internal reflection. Variants: the local-light method
-// (LIGHTS_NAIVE, _TILED, _CLUSTERED, _HASHED) or none.
+// (LIGHTS_NAIVE, _TILED, _CLUSTERED, _HASHED) or none; HAS_SUN_SHADOW (the sun's cascades).
 // Both stages: included once per file (the shader library expands each file once).
 #include "../../renderer/shaders/common.glsl"
 #include "waves.glsl"
@@ -38,6 +38,9 @@ void main() {
 #if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
 #define WATER_LOCAL_LIGHTS
 #include "../../lighting/shaders/lights.glsl"
+#endif
+#ifdef HAS_SUN_SHADOW
+#include "../../shadows/shaders/shadows.glsl"
 #endif
 #define SKY_ATMOSPHERE_BLOCK WATER_BINDING_ATMOSPHERE
 #include "../../sky/shaders/atmosphere.glsl"
@@ -118,7 +121,14 @@ void main() {
     float dist = max(length(pos), 1e-4);
     vec3 v = -pos / dist;
     vec3 l = u_sun_dir.xyz;
-    vec3 e_down = w_sun.rgb * max(l.y, 0.0) + w_sky_up.rgb;  // irradiance on the still surface
+    // The sun's visibility through the terrain's cascaded shadows (taken on the still surface's
+    // normal: wave normals would only add acne), on the direct sun terms.
+    float sun_visible = 1.0;
+#ifdef HAS_SUN_SHADOW
+    if (l.y > 0.0) sun_visible = sunShadow(pos, vec3(0.0, 1.0, 0.0), l.y, max(-(mat3(u_view) * pos).z, 0.0), gl_FragCoord.xy);
+#endif
+    vec3 sun = w_sun.rgb * sun_visible;
+    vec3 e_down = sun * max(l.y, 0.0) + w_sky_up.rgb;  // irradiance on the still surface
     vec3 sigma = w_absorption.rgb;
     vec3 scatter = w_scatter.rgb * e_down / PI;  // radiance of a deep water column
     bool below = pos.y > 0.0;  // the surface is above the eye: seen from under water
@@ -172,7 +182,7 @@ void main() {
         // Sun glitter: GGX widened by the slopes the footprint removed (no aliasing far away).
         float r0 = w_surface.y;
         float roughness = min(sqrt(sqrt(r0 * r0 * r0 * r0 + 2.0 * ws.lost_slope_variance)), 1.0);
-        color += evalBrdf(vec3(0.0), roughness, kWaterF0, n, l, v) * w_sun.rgb * max(dot(n, l), 0.0);
+        color += evalBrdf(vec3(0.0), roughness, kWaterF0, n, l, v) * sun * max(dot(n, l), 0.0);
 
         // Foam: bands running up the shore where the water is shallow, and squeezed crests.
         if (w_surface.w > 0.0 && column < w_surface.w) {
@@ -192,7 +202,7 @@ void main() {
         uint evaluated, exact;
         color += forwardLocalLights(s, pos, pixel, evaluated, exact);
 #endif
-        vec3 foam_light = w_foam.rgb / PI * (w_sun.rgb * max(dot(n, l), 0.0) + mix(w_ground_up.rgb, w_sky_up.rgb, n.y * 0.5 + 0.5));
+        vec3 foam_light = w_foam.rgb / PI * (sun * max(dot(n, l), 0.0) + mix(w_ground_up.rgb, w_sky_up.rgb, n.y * 0.5 + 0.5));
         color = mix(color, foam_light, foam);
     } else {
         // From below: n faces down towards the eye; Snell's window above, total internal
