@@ -34,7 +34,7 @@ bool sameWaves(const WaterSettings& a, const WaterSettings& b) {
 struct Water::Uniforms {
     glm::vec4 wave_a[WATER_MAX_WAVES];
     glm::vec4 wave_b[WATER_MAX_WAVES];
-    glm::vec4 grid, surface, scatter, absorption, foam, sun, sky_up, ground_up;
+    glm::vec4 grid, surface, scatter, absorption, foam, sun, sky_up, ground_up, misc;
 };
 
 WaterGrid waterGrid(const WaterSettings& s, double height_above_m) {
@@ -103,6 +103,7 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
     u.sun = glm::vec4(light.sun_irradiance, sky_lut ? 1.0f : 0.0f);
     u.sky_up = glm::vec4(light.sky_up, s.reflection == WaterReflection::Ssr ? float(s.ssr_steps) : 0.0f);
     u.ground_up = glm::vec4(light.ground_up, s.ssr_max_distance_m);
+    u.misc = glm::vec4(float(waves_.max_height), 0.0f, 0.0f, 0.0f);
     if (!uniforms_) uniforms_ = gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "water uniforms");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
 }

@@ -18,9 +18,13 @@ void main() {
     vec3 ray = viewRay(v_uv);
     float forward = max(-(mat3(u_view) * ray).z, 1e-3);
     vec3 near_point = ray * (u_near.x / forward);
-    WaveSample ws = evaluateWaves(near_point.xz, 0.02);
-    float surface = w_surface.x + ws.displacement.y;
-    if (near_point.y >= surface) discard;
+    // Deeper than any trough reaches: every pixel is under water, no wave to evaluate. Else the
+    // waves longer than about 1 m decide (the split line needs no ripples).
+    float surface = w_surface.x;
+    if (near_point.y > w_surface.x - w_misc.x) {
+        surface += evaluateWaves(near_point.xz, 0.15).displacement.y;
+        if (near_point.y >= surface) discard;
+    }
     float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
     float d = depth > 0.0 ? length(positionFromDepth(v_uv, depth)) : 1e6;
     vec3 sigma = w_absorption.rgb;

@@ -15,6 +15,7 @@ layout(std140, binding = WATER_BINDING_UNIFORMS) uniform WaterUniforms {
     vec4 w_sun;         // rgb sun irradiance at normal incidence, w 1 when the sky-view LUT is bound
     vec4 w_sky_up;      // rgb sky irradiance on an up-facing surface, w ray-march steps (0: sky reflection only)
     vec4 w_ground_up;   // rgb irradiance from below, w longest reflected ray (m)
+    vec4 w_misc;        // x the highest a wave crest can reach above the still level (m)
 };
 
 struct WaveSample {
