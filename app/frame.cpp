@@ -20,6 +20,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace vista {
 
@@ -59,6 +60,7 @@ std::vector<ProgramKey> allPrograms() {
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : waterPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -338,7 +340,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
             LightPassOptions options;
             options.count = request.count_lights;
             options.heat = s.debug.view == DebugView::Lights;
-            options.forward = request.forward_lights;
+            options.forward = request.forward_lights || s.water.enabled;  // water.surface shades them forward
             options.spot_shadows = &spot_input;
             local_lights_->addPasses(graph, rc, scene, counters_, options);
         }
@@ -348,11 +350,33 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         // [debug] view = shadow shows the HDR target as lighting.sun left it: nothing on top.
     } else if (s.sky.enabled) {
         if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
-        sky_->addPasses(graph, rc, s.sky, scene);
-        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+        sky_->addLutPasses(graph, rc, s.sky);
     } else {
         sky_.reset();  // a disabled feature keeps nothing allocated
     }
+    // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
+    const bool water = s.water.enabled && !shadow_view;
+    if (water) {
+        if (!water_) water_ = std::make_unique<Water>();
+        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+        const double ground = terrain ? terrain_->heightAt(view.position.x, view.position.z) : std::nan("");
+        const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
+        water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get(), ground,
+                        ripples);
+        water_->addSurfacePasses(graph, rc, scene, sky_.get(), local_lights ? local_lights_.get() : nullptr, shadows);
+        const WaterStats& st = water_->stats();
+        report.counters["water.vertices"] = double(st.vertices);
+        report.counters["water.triangles"] = double(st.triangles);
+        report.counters["water.waves"] = double(st.waves);
+        report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
+    } else if (!s.water.enabled) {
+        water_.reset();  // a disabled feature keeps nothing allocated
+    }
+    if (!shadow_view && s.sky.enabled) {
+        sky_->addScenePasses(graph, rc, s.sky, scene);
+        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+    }
+    if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
     if (s.weather.enabled && !shadow_view) {
         if (!weather_) weather_ = std::make_unique<Weather>();

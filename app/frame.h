@@ -20,6 +20,7 @@
 #include "sky/sky_lighting.h"
 #include "sky/weather.h"
 #include "terrain/terrain.h"
+#include "water/water.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -76,6 +77,7 @@ public:
     SpotShadows* spotShadows() { return spot_shadows_.get(); }  // null while no spot light is shadowed
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     Weather* weather() { return weather_.get(); }  // null while [weather] is off
+    Water* water() { return water_.get(); }  // null while [water] is off
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -123,6 +125,7 @@ private:
     std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
+    std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes

@@ -1,4 +1,4 @@
-// The post chain's and the sun shadows' quality knobs per preset. High is the shipped default (Settings{}), so a scene
+// The post chain's, the sun shadows' and the sea's quality knobs per preset. High is the shipped default (Settings{}), so a scene
 // without a preset looks the same; Reference is everything at its maximum.
 #include "config/presets.h"
 
@@ -38,6 +38,20 @@ constexpr std::array<ShadowKnobs, 5> kShadow{{
     {4096, 64, 8192, 64},  // reference: the ranges' maxima
 }};
 
+// The sea: ring grid segments (cells about 2 pi / segments of their distance), screen-space
+// reflection steps (0: the sky alone, [water] reflection = sky) and waves.
+struct WaterKnobs {
+    int grid_segments, ssr_steps, waves;
+};
+
+constexpr std::array<WaterKnobs, 5> kWater{{
+    {64, 0, 16},     // low: sky reflection only
+    {96, 16, 20},    // medium
+    {128, 24, 24},   // high (the defaults)
+    {192, 48, 32},   // ultra
+    {256, 128, 32},  // reference: the ranges' maxima for steps and waves
+}};
+
 constexpr std::array<const char*, 5> kNames{"low", "medium", "high", "ultra", "reference"};
 
 }  // namespace
@@ -55,6 +69,11 @@ void applyQualityPreset(Settings& s, QualityPreset preset) {
     s.shadows.pcf_taps = sh.pcf_taps;
     s.shadows.spot_atlas_resolution = sh.spot_atlas;
     s.shadows.spot_taps = sh.spot_taps;
+    const WaterKnobs& w = kWater[std::size_t(preset)];
+    s.water.grid_segments = w.grid_segments;
+    s.water.reflection = w.ssr_steps > 0 ? WaterReflection::Ssr : WaterReflection::Sky;
+    if (w.ssr_steps > 0) s.water.ssr_steps = w.ssr_steps;
+    s.water.waves = w.waves;
 }
 
 std::optional<QualityPreset> qualityPresetFromName(std::string_view name) {

@@ -143,6 +143,8 @@ SkyAtmosphere::SkyAtmosphere()
     : uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky atmosphere uniforms")),
       frame_uniforms_(gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "sky frame uniforms")) {}
 
+SkyAtmosphere::~SkyAtmosphere() = default;
+
 void SkyAtmosphere::bindFrameUniforms() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, frame_uniforms_.id());
 }
@@ -169,6 +171,11 @@ void SkyAtmosphere::upload(const Uniforms& u) {
 }
 
 void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets) {
+    addLutPasses(graph, rc, sky);
+    addScenePasses(graph, rc, sky, targets);
+}
+
+void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky) {
     const AtmosphereParams p = atmosphereParams(sky);
     const glm::dvec3 sun = sunDirection(sky);
     const double altitude_m = cameraAltitudeM(rc);
@@ -288,7 +295,19 @@ void SkyAtmosphere::addPasses(FrameGraph& graph, const RenderContext& rc, const 
 
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
     frame_transmittance_ = transmittance;
+    frame_multiscatter_ = multiscatter;
+    frame_sky_view_ = sky_view;
+    frame_in_space_ = in_space;
+    if (!frame_u_) frame_u_ = std::make_unique<Uniforms>();
+    *frame_u_ = u;
+}
 
+void SkyAtmosphere::addScenePasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky,
+                                   SceneTargets& targets) {
+    const Uniforms& u = *frame_u_;
+    const bool in_space = frame_in_space_;
+    const TextureHandle transmittance = frame_transmittance_, multiscatter = frame_multiscatter_,
+                        sky_view = frame_sky_view_;
     if (sky.aerial_perspective && targets.depth.valid())
         addAerialPasses(graph, rc, u, in_space, transmittance, multiscatter, targets);
 

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,12 +49,19 @@ struct SkyLutStats {
 class SkyAtmosphere {
 public:
     SkyAtmosphere();
+    ~SkyAtmosphere();
     // Adds the passes this frame needs: the LUT passes whose inputs changed; with
     // aerial_perspective and a depth target, "sky.aerial_volume" (not from space) and
     // "sky.aerial" (haze and extinction over targets.hdr where targets.depth > 0, so after the
     // lighting); then
     // "sky.atmosphere" over targets.hdr where targets.depth (if valid) is still at infinity.
+    // Same as addLutPasses() then addScenePasses().
     void addPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
+    // The LUT passes of this frame (those whose inputs changed) and this frame's atmosphere block.
+    // Passes that read the LUTs before the sky is drawn (water.surface) go between the two calls.
+    void addLutPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky);
+    // After addLutPasses() in the same graph: the aerial perspective and "sky.atmosphere".
+    void addScenePasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
     // Forces every LUT to be rebuilt next frame (benchmarks).
     void invalidate();
     const SkyLutStats& stats() const { return stats_; }
@@ -64,6 +72,12 @@ public:
     // transmittance LUT, and its atmosphere block bound at SKY_BINDING_ATMOSPHERE.
     TextureHandle frameTransmittance() const { return frame_transmittance_; }
     void bindFrameUniforms() const;
+    // This frame's sky-view LUT (after addLutPasses) and its atmosphere block's buffer, for
+    // passes that bind the block elsewhere (sky/shaders/atmosphere.glsl SKY_ATMOSPHERE_BLOCK).
+    TextureHandle frameSkyView() const { return frame_sky_view_; }
+    GLuint frameUniformBuffer() const { return frame_uniforms_.id(); }
+    // True when this frame's camera is above the atmosphere (the sky-view LUT is then not rebuilt).
+    bool frameInSpace() const { return frame_in_space_; }
 
 private:
     struct Uniforms;
@@ -74,7 +88,9 @@ private:
 
     gl::Buffer uniforms_;
     gl::Buffer frame_uniforms_;  // this frame's block, written while the graph is built
-    TextureHandle frame_transmittance_;
+    TextureHandle frame_transmittance_, frame_multiscatter_, frame_sky_view_;
+    std::unique_ptr<Uniforms> frame_u_;  // this frame's block (addLutPasses to addScenePasses)
+    bool frame_in_space_ = false;
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for
     std::vector<float> view_key_;        // size and steps of the sky-view LUT

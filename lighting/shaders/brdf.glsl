@@ -7,7 +7,10 @@
 //   F = F0 + (1 - F0) (1 - v.h)^5                                     Schlick
 // with a = max(roughness, 0.045)^2. A light of irradiance E (at normal incidence) adds
 // f * E * max(n.l, 0).
+#ifndef VISTA_PI_DEFINED  // brdf.glsl and atmosphere.glsl both define it
+#define VISTA_PI_DEFINED
 const float PI = 3.14159265358979;
+#endif
 
 vec3 evalBrdf(vec3 albedo, float roughness, float f0, vec3 n, vec3 l, vec3 v) {
     float nl = min(dot(n, l), 1.0);

@@ -4,7 +4,10 @@
 // surfaces): any of them finds a position's candidate lights with lightRange() and shades them
 // with shadeLocalLight(). Formulas and layouts: lighting/lights.h, lighting/local_lights.h.
 // Needs common.glsl, gbuffer.glsl and brdf.glsl first. With HAS_SPOT_SHADOWS (fragment stages)
-// shadowed spot lights read their tile of the spot shadow atlas.
+// shadowed spot lights read their tile of the spot shadow atlas. (The filter taps are included
+// outside the #ifdef: the shader library expands each file once, before the GLSL preprocessor,
+// so a file first reached inside an #ifdef would be missing for a later includer.)
+#include "../../shadows/shaders/shadow_filter.glsl"
 #ifdef HAS_SPOT_SHADOWS
 #include "../../shadows/shaders/spot_shadows.glsl"
 #endif

@@ -6,7 +6,12 @@
 // under a curved atmosphere: the planet's centre is straight below the camera).
 #include "sky_bindings.glsl"
 
-layout(std140, binding = SKY_BINDING_ATMOSPHERE) uniform AtmosphereUniforms {
+// A program that also uses a block at SKY_BINDING_ATMOSPHERE (the light grid) defines
+// SKY_ATMOSPHERE_BLOCK to another binding before including this file.
+#ifndef SKY_ATMOSPHERE_BLOCK
+#define SKY_ATMOSPHERE_BLOCK SKY_BINDING_ATMOSPHERE
+#endif
+layout(std140, binding = SKY_ATMOSPHERE_BLOCK) uniform AtmosphereUniforms {
     vec4 a_radii;          // x bottom R, y top Rt, z camera radius, w camera altitude
     vec4 a_rayleigh;       // xyz scattering, w scale height
     vec4 a_mie;            // xyz scattering, w scale height
@@ -28,7 +33,10 @@ layout(std140, binding = SKY_BINDING_ATMOSPHERE) uniform AtmosphereUniforms {
     ivec4 a_gl_count;      // x polar nodes, y azimuth nodes
 };
 
+#ifndef VISTA_PI_DEFINED  // brdf.glsl and atmosphere.glsl both define it
+#define VISTA_PI_DEFINED
 const float PI = 3.14159265358979;
+#endif
 
 float bottomR() { return a_radii.x; }
 float topR() { return a_radii.y; }

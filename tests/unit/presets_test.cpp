@@ -29,6 +29,10 @@ TEST_CASE("presets: each is valid, high is the default, and the quality knobs gr
             CHECK(s.shadows.pcf_taps >= previous.shadows.pcf_taps);
             CHECK(s.shadows.spot_atlas_resolution >= previous.shadows.spot_atlas_resolution);
             CHECK(s.shadows.spot_taps >= previous.shadows.spot_taps);
+            CHECK(s.water.grid_segments >= previous.water.grid_segments);
+            CHECK(s.water.waves >= previous.water.waves);
+            CHECK((s.water.reflection == WaterReflection::Ssr || previous.water.reflection == WaterReflection::Sky));
+            if (previous.water.reflection == WaterReflection::Ssr) CHECK(s.water.ssr_steps >= previous.water.ssr_steps);
             CHECK(s.dof.samples + s.motion_blur.samples + s.ssao.directions * s.ssao.steps >
                   previous.dof.samples + previous.motion_blur.samples + previous.ssao.directions * previous.ssao.steps);
         }
