@@ -32,8 +32,6 @@ Settings baseScene() {
     s.exposure.mode = ExposureMode::Manual;
     s.exposure.ev = -1.0f;
     s.grade.enabled = s.dof.enabled = s.motion_blur.enabled = s.lens_flare.enabled = s.night_vision.enabled = false;
-    // The images predate the sea (on in default.ini): drop this line when they are regenerated.
-    s.water.enabled = false;
     return s;
 }
 
