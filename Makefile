@@ -3,23 +3,41 @@
 #   make test   build and run every test through ctest
 #   make bench  build and print the per-pass frame benchmark
 #   make golden build and rewrite the golden images (tests/golden/*.png) from this build
+#   make fuzz   build the libFuzzer targets with clang in build-fuzz/ and run each for FUZZ_SECONDS
+#   make test-sanitize  build with AddressSanitizer + UBSan in build-sanitize/ and run every test
 BUILD_DIR  ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
 PACKAGES   := $(shell grep -v '^\#' tools/debian-packages.txt)
+FUZZ_PACKAGES := $(shell grep -v '^\#' tools/fuzz-packages.txt)
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+FUZZ_DIR   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := ini camera_path heightmap
+SANITIZE_DIR ?= build-sanitize
+# Mesa (llvmpipe, OSMesa) keeps allocations until exit and is not built with the sanitizers:
+# leaks are not checked (tools/asan.supp would have to list all of Mesa), everything else is.
+export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS ?= print_stacktrace=1:halt_on_error=1
 
-.PHONY: all deps configure build demo test bench golden clean
+.PHONY: all deps fuzz-deps configure build demo test bench golden fuzz test-sanitize clean
 
 all: build
 
 # Installs only what is missing, so a machine that has everything never calls apt-get.
-deps:
-	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+define install_missing
+	@missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing Debian packages:" $$missing; \
 	  $(SUDO) apt-get update && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
 	fi
+endef
+
+deps:
+	$(call install_missing,$(PACKAGES))
+
+fuzz-deps: deps
+	$(call install_missing,$(FUZZ_PACKAGES))
 
 configure: deps
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DVISTA_BUILD_TESTS=ON > $(BUILD_DIR).configure.log 2>&1 || { cat $(BUILD_DIR).configure.log; exit 1; }
@@ -38,6 +56,28 @@ bench: build
 
 golden: build
 	VISTA_UPDATE_GOLDEN=1 ./$(BUILD_DIR)/tests/vista_gl_tests -tc="gl: golden images*"
+
+# Each target runs for FUZZ_SECONDS from the seeds in tests/fuzz/corpus/NAME (new inputs go to
+# $(FUZZ_DIR)/corpus/NAME); a crash is saved as $(FUZZ_DIR)/crash-NAME-* and fails the target.
+fuzz: fuzz-deps
+	@cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DVISTA_BUILD_TESTS=OFF -DVISTA_FUZZ=ON > $(FUZZ_DIR).configure.log 2>&1 || { cat $(FUZZ_DIR).configure.log; exit 1; }
+	@cmake --build $(FUZZ_DIR) -j $(JOBS) --target $(addprefix vista_fuzz_,$(FUZZ_TARGETS))
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_DIR)/corpus/$$t; \
+	  echo "fuzzing $$t for $(FUZZ_SECONDS) s"; \
+	  ASAN_OPTIONS=detect_leaks=1 ./$(FUZZ_DIR)/tests/fuzz/vista_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	    -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/crash-$$t- $(FUZZ_DIR)/corpus/$$t tests/fuzz/corpus/$$t \
+	    2> $(FUZZ_DIR)/$$t.log || { tail -50 $(FUZZ_DIR)/$$t.log; echo "make fuzz: $$t failed; the input is in $(FUZZ_DIR)/crash-$$t-*"; exit 1; }; \
+	  grep -E '^stat::number_of_executed_units|^stat::new_units_added' $(FUZZ_DIR)/$$t.log | sed "s/^/  $$t /"; \
+	done
+
+# Unit and GL tests built with -fsanitize=address,undefined (VISTA_SANITIZE) in $(SANITIZE_DIR).
+test-sanitize: deps
+	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISTA_BUILD_TESTS=ON -DVISTA_SANITIZE=address,undefined \
+	  > $(SANITIZE_DIR).configure.log 2>&1 || { cat $(SANITIZE_DIR).configure.log; exit 1; }
+	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) --timeout 1800
 
 clean:
 	rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

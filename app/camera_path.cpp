@@ -29,6 +29,11 @@ namespace {
 
 constexpr std::array<const char*, 7> kFieldNames{"t", "x", "y", "z", "yaw_deg", "pitch_deg", "fov_deg"};
 constexpr double kMinFov = 1.0, kMaxFov = 179.0, kMaxPitch = 90.0;
+// Bounds that keep the interpolation finite: positions as far out as the scene file allows
+// ([camera] position), times to 30,000 years, yaw to a million degrees of winding, and keys at
+// least a millisecond apart (velocities stay below 1e12 m/s, products in the Hermite basis
+// finite).
+constexpr double kMaxPosition = 1e8, kMaxTime = 1e12, kMaxYaw = 1e6, kMinStep = 1e-3;
 // Smallest centripetal knot spacing: coincident positions would otherwise divide by zero.
 constexpr double kMinKnot = 1e-9;
 
@@ -159,12 +164,24 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& name, Inp
         if (!numbers_ok) continue;
 
         bool ok = true;
-        if (previous_t && v[0] <= *previous_t) {
+        if (std::abs(v[0]) > kMaxTime) {
+            report("t " + format(v[0]) + " is outside -1e12..1e12 seconds");
+            ok = false;
+        } else if (previous_t && v[0] < *previous_t + kMinStep) {
             report("time " + format(v[0]) + " must be greater than the previous key's time " + format(*previous_t) +
-                   " (times increase strictly)");
+                   " (times increase strictly, by at least 0.001 s)");
             ok = false;
         } else {
             previous_t = v[0];
+        }
+        for (std::size_t i = 1; i <= 3; ++i)
+            if (std::abs(v[i]) > kMaxPosition) {
+                report(std::string(kFieldNames[i]) + " " + format(v[i]) + " is outside -1e8..1e8 m");
+                ok = false;
+            }
+        if (std::abs(v[4]) > kMaxYaw) {
+            report("yaw_deg " + format(v[4]) + " is outside -1e6..1e6 degrees");
+            ok = false;
         }
         if (v[5] < -kMaxPitch || v[5] > kMaxPitch) {
             report("pitch_deg " + format(v[5]) + " is outside -90..90 degrees");

@@ -414,7 +414,25 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (request.graph_dot) *request.graph_dot = graph.dot();
     report.executed = graph.executedPasses();
     report.culled = graph.culledPasses();
+    // GPU memory held after the frame, per feature (only for features that exist this frame).
+    if (terrain_) report.counters["terrain.memory_bytes"] = double(terrain_->gpuMemoryBytes());
+    if (grass_) report.counters["grass.memory_bytes"] = double(grass_->memoryBytes());
+    if (sky_) report.counters["sky.memory_bytes"] = double(sky_->memoryBytes());
+    if (clouds_) report.counters["clouds.memory_bytes"] = double(clouds_->memoryBytes());
+    if (local_lights_) report.counters["lights.memory_bytes"] = double(local_lights_->stats().memory_bytes);
+    if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
+    if (const std::size_t postfx = postfx_.memoryBytes(); postfx > 0) report.counters["postfx.memory_bytes"] = double(postfx);
+    report.counters["gpu.transient_bytes"] = double(pool_.bytes());
+    report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
     return report;
+}
+
+std::size_t FrameRenderer::gpuMemoryBytes() const {
+    return pool_.bytes() + std::size_t(frame_uniforms_.size()) + counters_.memoryBytes() +
+           (terrain_ ? terrain_->gpuMemoryBytes() : 0) + (grass_ ? grass_->memoryBytes() : 0) +
+           (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
+           (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
+           (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + postfx_.memoryBytes();
 }
 
 }  // namespace vista

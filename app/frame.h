@@ -90,6 +90,12 @@ public:
     PassTimers& timers() { return timers_; }
     CounterReadback& counters() { return counters_; }
     const TransientPool& pool() const { return pool_; }
+    // Destroys the pool's unused transient objects now instead of after a few idle frames, so
+    // the next frame's "gpu.memory_bytes" holds only what it needs (tests of leaving features out).
+    void trimTransients() { pool_.clear(); }
+    // GPU bytes the renderer holds: the transient pool, every feature's long-lived objects and
+    // the frame's own buffers. Per feature in the frame's "FEATURE.memory_bytes" counters.
+    std::size_t gpuMemoryBytes() const;
     RenderContext context(const ViewParams& view, const Settings& settings, double time_s);
     // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
     double measureReferenceCopy(int width, int height);

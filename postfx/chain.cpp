@@ -103,6 +103,11 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     return image;
 }
 
+std::size_t PostChain::memoryBytes() const {
+    return (auto_exposure_ ? auto_exposure_->memoryBytes() : 0) + (dof_ ? dof_->memoryBytes() : 0) +
+           (lens_flare_ ? lens_flare_->memoryBytes() : 0) + lut_texture_.bytes();
+}
+
 InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& lut_file) {
     InputErrors errors;
     const std::string wanted = s.grade.enabled && !s.grade.lut.empty() ? lut_file.string() : std::string();

@@ -40,6 +40,9 @@ public:
     // Loads the files the settings name ([postfx.grade] lut, found at lut_file) when they
     // changed; the problems (file:line) are returned and the LUT is then left out.
     InputErrors prepare(const Settings& s, const std::filesystem::path& lut_file);
+    // GPU bytes the chain holds across frames (effect states, the grading LUT); 0 when no effect
+    // keeps state.
+    std::size_t memoryBytes() const;
 
 private:
     std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames

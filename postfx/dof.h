@@ -50,6 +50,7 @@ public:
                             const DofSettings& s, double dt_s, bool reset);
     // Reads the autofocus state back (tests, panel; stalls).
     postfx::DofFocusState read() const;
+    std::size_t memoryBytes() const { return std::size_t(state_.size()); }  // GPU bytes held across frames
 
 private:
     gl::Buffer state_;

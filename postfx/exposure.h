@@ -32,6 +32,7 @@ public:
                             double dt_s, bool reset);
     // Reads the state back from the GPU (tests, panel; stalls).
     postfx::ExposureState read() const;
+    std::size_t memoryBytes() const { return std::size_t(state_.size()); }  // GPU bytes held across frames
 
 private:
     gl::Buffer state_;

@@ -45,6 +45,7 @@ public:
                             const LensFlareSettings& s, const glm::dvec3& sun_dir, float sun_illuminance, double dt_s,
                             bool reset);
     postfx::FlareVisibility read() const;  // tests, panel (stalls)
+    std::size_t memoryBytes() const { return std::size_t(state_.size()); }  // GPU bytes held across frames
 
 private:
     gl::Buffer state_;

@@ -6,6 +6,24 @@
 
 namespace vista {
 
+std::size_t textureBytes(const TextureDesc& desc) {
+    std::size_t texel = 4;
+    switch (desc.format) {
+        case PixelFormat::RGBA8: case PixelFormat::RGB10A2: case PixelFormat::RG16F: case PixelFormat::R32F:
+        case PixelFormat::R32UI: case PixelFormat::Depth32F: texel = 4; break;
+        case PixelFormat::RGBA16F: texel = 8; break;
+        case PixelFormat::RGBA32F: texel = 16; break;
+        case PixelFormat::R16F: texel = 2; break;
+    }
+    std::size_t bytes = 0;
+    for (int level = 0, w = desc.width, h = desc.height; level < std::max(desc.levels, 1); ++level) {
+        bytes += std::size_t(std::max(w, 1)) * std::size_t(std::max(h, 1)) * texel;
+        w /= 2;
+        h /= 2;
+    }
+    return bytes;
+}
+
 FrameGraph::~FrameGraph() = default;
 
 std::uint32_t FrameGraph::addPassNode(std::string name, std::unique_ptr<PassBase> pass) {

@@ -27,6 +27,9 @@ struct TextureDesc {
     bool operator==(const TextureDesc&) const = default;
 };
 
+// Bytes of a texture with this description, every mip level included.
+std::size_t textureBytes(const TextureDesc& desc);
+
 struct BufferDesc {
     std::size_t bytes = 0;
     bool operator==(const BufferDesc&) const = default;

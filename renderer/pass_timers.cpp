@@ -99,6 +99,13 @@ void CounterReadback::endFrame() {
         }
 }
 
+std::size_t CounterReadback::memoryBytes() const {
+    std::size_t bytes = 0;
+    for (const Pending& p : pending_) bytes += std::size_t(p.buffer.size());
+    for (const gl::Buffer& b : spare_) bytes += std::size_t(b.size());
+    return bytes;
+}
+
 std::vector<CounterReadback::Value> CounterReadback::collect(bool wait) {
     std::vector<Value> done;
     while (!pending_.empty() && pending_.front().fence) {

@@ -81,6 +81,8 @@ public:
     // Call after the frame's commands are submitted.
     void endFrame();
     std::vector<Value> collect(bool wait = false);
+    // GPU bytes of the pending and spare counter buffers.
+    std::size_t memoryBytes() const;
 
 private:
     struct Pending {

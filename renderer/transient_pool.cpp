@@ -66,6 +66,12 @@ void TransientPool::endFrame() {
     });
 }
 
+std::size_t TransientPool::bytes() const {
+    std::size_t total = 0;
+    for (const Entry& e : entries_) total += e.is_texture ? textureBytes(e.texture) : e.buffer.bytes;
+    return total;
+}
+
 void TransientPool::clear() {
     std::erase_if(entries_, [&](const Entry& e) {
         if (!e.in_use) destroy(e);

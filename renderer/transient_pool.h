@@ -42,6 +42,8 @@ public:
     void clear();
 
     std::size_t liveCount() const { return entries_.size(); }
+    // Bytes of every texture and buffer the pool holds, in use or free.
+    std::size_t bytes() const;
     std::uint64_t createdCount() const { return created_; }
 
 private:

@@ -65,6 +65,11 @@ public:
     // Forces every LUT to be rebuilt next frame (benchmarks).
     void invalidate();
     const SkyLutStats& stats() const { return stats_; }
+    // GPU bytes held across frames: the LUTs and uniform blocks (the aerial volume is transient).
+    std::size_t memoryBytes() const {
+        return std::size_t(uniforms_.size()) + std::size_t(frame_uniforms_.size()) + transmittance_.bytes() +
+               multiscatter_.bytes() + sky_view_.bytes();
+    }
     GLuint transmittanceTexture() const { return transmittance_.id(); }
     GLuint multiscatterTexture() const { return multiscatter_.id(); }
     GLuint skyViewTexture() const { return sky_view_.id(); }

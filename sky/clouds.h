@@ -32,6 +32,8 @@ public:
     // surface (sky/sky_lighting.h), the clouds' ambient light. Returns the active layers.
     int prepare(const RenderContext& rc, const CloudsSettings& clouds, const SkySettings& sky,
                 const glm::dvec3& sky_irradiance_up);
+    // GPU bytes held across frames (its uniform block; the maps are transient).
+    std::size_t memoryBytes() const { return std::size_t(uniforms_.size()); }
     // "clouds.shadow": an R16F shadow_size^2 map of the sun's transmittance (1 = clear);
     // map: what lighting.sun needs to sample it (xy its centre minus the camera, world x/z m,
     // z 1 / extent (1/m), w the sun's slant max(sun y, 0.05)).

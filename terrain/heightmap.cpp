@@ -2,6 +2,7 @@
 // deterministic island generator used for the default scene's terrain.
 #include "terrain/heightmap.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -41,50 +42,57 @@ std::string checkSize(int width, int height, std::uint64_t max_bytes) {
     return {};
 }
 
-// Little-endian uint16 samples; the file length must be exactly width*height*2 bytes so a
-// wrong raw_width/raw_height is caught instead of shearing the terrain.
-std::string loadRaw16(const std::filesystem::path& file, int width, int height, std::uint64_t max_bytes, Heightmap& map) {
+// Raw .r16 needs its size given: the byte count must be exactly width*height*2 so a wrong
+// raw_width/raw_height is caught instead of shearing the terrain.
+std::string checkRawSize(int width, int height, std::uint64_t actual, std::uint64_t max_bytes) {
     if (width < 2 || height < 2)
         return "a raw .r16 heightmap needs raw_width and raw_height (each >= 2); got " + std::to_string(width) + "x" +
                std::to_string(height);
     if (std::string why = checkSize(width, height, max_bytes); !why.empty()) return why;
-    std::error_code ec;
-    std::uint64_t actual = std::filesystem::file_size(file, ec);
-    if (ec) return "cannot read (" + ec.message() + ")";
     std::uint64_t expected = std::uint64_t(width) * std::uint64_t(height) * 2;
     if (actual != expected)
         return "is " + std::to_string(actual) + " bytes but raw_width x raw_height = " + std::to_string(width) + "x" +
                std::to_string(height) + " 16-bit samples need " + std::to_string(expected) + " bytes";
-    std::ifstream in(file, std::ios::binary);
-    std::vector<unsigned char> bytes(expected);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(expected))) return "cannot read all " + std::to_string(expected) + " bytes";
+    return {};
+}
+
+// Little-endian uint16 samples, normalised to [0, 1]; bytes holds exactly width*height of them.
+void decodeRaw16(std::span<const unsigned char> bytes, int width, int height, Heightmap& map) {
     map.width = width;
     map.height = height;
     map.samples.resize(std::size_t(width) * std::size_t(height));
     for (std::size_t i = 0; i < map.samples.size(); ++i)
         map.samples[i] = float(unsigned(bytes[2 * i]) | unsigned(bytes[2 * i + 1]) << 8) / 65535.0f;
+}
+
+std::string loadRaw16(const std::filesystem::path& file, int width, int height, std::uint64_t max_bytes, Heightmap& map) {
+    std::error_code ec;
+    std::uint64_t actual = width < 2 || height < 2 ? 0 : std::filesystem::file_size(file, ec);
+    if (ec) return "cannot read (" + ec.message() + ")";
+    if (std::string why = checkRawSize(width, height, actual, max_bytes); !why.empty()) return why;
+    std::ifstream in(file, std::ios::binary);
+    std::vector<unsigned char> bytes(actual);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(actual))) return "cannot read all " + std::to_string(actual) + " bytes";
+    decodeRaw16(bytes, width, height, map);
     return {};
 }
 
-std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
-    // Alpha is not coverage here: ask for the stored RGB, not RGB premultiplied by alpha.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(file.string(), &config);
-    if (!in) return "cannot read (" + OIIO::geterror() + ")";
-    const OIIO::ImageSpec& spec = in->spec();
+// An opened image: its channels and size are checked before any sample is read.
+std::string readImage(OIIO::ImageInput& in, std::uint64_t max_bytes, Heightmap& map) {
+    const OIIO::ImageSpec& spec = in.spec();
     int channels = spec.nchannels;
     // A grey image saved as RGB(A) is common; anything else with colour is a mistake.
     if (channels != 1 && channels != 3 && channels != 4)
         return "has " + std::to_string(channels) + " channels; a heightmap needs 1 (grey)";
+    if (spec.depth > 1) return "is a volume of " + std::to_string(spec.depth) + " slices; a heightmap needs one 2D image";
     if (std::string why = checkSize(spec.width, spec.height, max_bytes); !why.empty()) return why;
     std::vector<float> samples(std::size_t(spec.width) * std::size_t(spec.height));
     // One channel at a time, so an RGB(A) file needs two heightmaps of memory, not four.
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, samples.data())) return "cannot read (" + in->geterror() + ")";
+    if (!in.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, samples.data())) return "cannot read (" + in.geterror() + ")";
     if (channels > 1) {
         std::vector<float> other(samples.size());
         for (int c = 1; c < 3; ++c) {  // R, G, B; alpha is ignored
-            if (!in->read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, other.data())) return "cannot read (" + in->geterror() + ")";
+            if (!in.read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, other.data())) return "cannot read (" + in.geterror() + ")";
             for (std::size_t i = 0; i < samples.size(); ++i)
                 if (!(other[i] == samples[i]) && !(std::isnan(other[i]) && std::isnan(samples[i])))
                     return "has " + std::to_string(channels) + " channels whose colours differ at " + texelName(i, spec.width) +
@@ -97,13 +105,43 @@ std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes
     return {};
 }
 
-}  // namespace
+// Alpha is not coverage here: ask for the stored RGB, not RGB premultiplied by alpha.
+OIIO::ImageSpec openConfig() {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
 
-Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
-                        std::uint64_t max_bytes) {
-    Heightmap map;
-    std::string why = lowercase(file.extension().string()) == ".r16" ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
-                                                                     : loadImage(file, max_bytes, map);
+std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
+    const OIIO::ImageSpec config = openConfig();
+    auto in = OIIO::ImageInput::open(file.string(), &config);
+    if (!in) return "cannot read (" + OIIO::geterror() + ")";
+    return readImage(*in, max_bytes, map);
+}
+
+std::string decodeImage(std::span<const unsigned char> bytes, const std::string& name, std::uint64_t max_bytes,
+                        Heightmap& map) {
+    // Only a format whose reader takes a memory reader: OpenImageIO would otherwise open name
+    // from the disk instead.
+    const std::string extension = std::filesystem::path(name).extension().string();
+    auto probe = extension.size() > 1 ? OIIO::ImageInput::create(extension.substr(1)) : nullptr;
+    if (!probe) return "is not a format OpenImageIO reads (by its extension '" + extension + "')";
+    if (!probe->supports("ioproxy")) return "cannot be read from memory (format " + std::string(probe->format_name()) + ")";
+    probe.reset();
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    // The reader goes in the configuration too: a format's open() takes it from there.
+    OIIO::Filesystem::IOProxy* proxy = &reader;
+    OIIO::ImageSpec config = openConfig();
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto in = OIIO::ImageInput::open(name, &config, proxy);
+    if (!in) return "cannot read (" + OIIO::geterror() + ")";
+    std::string why = readImage(*in, max_bytes, map);
+    in->close();
+    return why;
+}
+
+// The checks every heightmap passes after decoding: finite samples only.
+Heightmap finish(Heightmap map, std::string why, const std::string& name, InputErrors& errors) {
     if (why.empty()) {
         std::size_t bad = 0, first = 0;
         for (std::size_t i = 0; i < map.samples.size(); ++i)
@@ -113,10 +151,35 @@ Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int ra
                   ", " + std::to_string(bad) + " non-finite in total; heights must be finite numbers";
     }
     if (!why.empty()) {
-        errors.push_back({file.string(), 0, why});
+        errors.push_back({name, 0, why});
         return {};
     }
     return map;
+}
+
+bool isRaw(const std::string& name) { return lowercase(std::filesystem::path(name).extension().string()) == ".r16"; }
+
+}  // namespace
+
+Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
+                        std::uint64_t max_bytes) {
+    Heightmap map;
+    std::string why = isRaw(file.string()) ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
+                                           : loadImage(file, max_bytes, map);
+    return finish(std::move(map), std::move(why), file.string(), errors);
+}
+
+Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::string& name, int raw_width, int raw_height,
+                          InputErrors& errors, std::uint64_t max_bytes) {
+    Heightmap map;
+    std::string why;
+    if (isRaw(name)) {
+        why = checkRawSize(raw_width, raw_height, bytes.size(), max_bytes);
+        if (why.empty()) decodeRaw16(bytes, raw_width, raw_height, map);
+    } else {
+        why = decodeImage(bytes, name, max_bytes, map);
+    }
+    return finish(std::move(map), std::move(why), name, errors);
 }
 
 float Heightmap::sample(double x, double z) const {

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct Heightmap {
 // what is wrong, what is accepted). max_bytes bounds the memory a heightmap may take.
 Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
                         std::uint64_t max_bytes = std::uint64_t(4) << 30);
+// The same for a file's bytes held in memory (the fuzz target and tests): name's extension picks
+// the format as above (.r16 raw, otherwise an image OpenImageIO decodes from memory), and errors
+// name it. Every size and channel check runs before samples are allocated.
+Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::string& name, int raw_width, int raw_height,
+                          InputErrors& errors, std::uint64_t max_bytes = std::uint64_t(4) << 30);
 
 // Writes a 16-bit single-channel PNG of values clamped to [0, 1]. "" on success, else why.
 std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map);

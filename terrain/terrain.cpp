@@ -346,6 +346,14 @@ std::size_t Terrain::memoryBytes() const {
            std::size_t(shadow_instances_.size());
 }
 
+std::size_t Terrain::gpuMemoryBytes() const {
+    std::size_t bytes = 0;
+    for (const gl::Texture* t : {&height_, &normals_, &albedo_, &detail_, &bias_texture_}) bytes += t->bytes();
+    for (const gl::Buffer* b : {&grid_indices_, &instance_buffer_, &bounds_buffer_, &shadow_instances_})
+        bytes += std::size_t(b->size());
+    return bytes;
+}
+
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
                     SceneTargets& targets) {
     struct Data {

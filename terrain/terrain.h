@@ -101,6 +101,8 @@ public:
     const MinMaxQuadtree& quadtree() const { return tree_; }
     const Heightmap& heightmap() const { return map_; }
     std::size_t memoryBytes() const;
+    // Of that, what lives on the GPU: height, normal and material textures, index and instance buffers.
+    std::size_t gpuMemoryBytes() const;
     GLuint heightTexture() const { return height_.id(); }
     GLuint normalTexture() const { return normals_.id(); }   // world normals (RGBA8 snorm tiles)
     GLuint albedoTexture() const { return albedo_.id(); }    // material albedo array (sRGB, A = roughness)

@@ -1,6 +1,8 @@
 // Creation helpers for the RAII GL objects.
 #include "renderer/gl/objects.h"
 
+#include <algorithm>
+
 namespace vista::gl {
 
 Buffer Buffer::create(GLsizeiptr bytes, const void* data, GLbitfield flags, std::string_view name) {
@@ -24,6 +26,29 @@ Texture Texture::create2D(GLsizei width, GLsizei height, GLenum internal_format,
     Texture texture(id, width, height, internal_format);
     texture.label(name);
     return texture;
+}
+
+// Sums each level's texels times the bits of its components, so every uncompressed format,
+// array layer and 3D slice is counted without a table of formats.
+std::size_t Texture::storageBytes(GLuint id) {
+    if (id == 0) return 0;
+    GLint levels = 0;
+    glGetTextureParameteriv(id, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    std::size_t bytes = 0;
+    for (GLint level = 0; level < std::max(levels, 1); ++level) {
+        GLint w = 0, h = 0, d = 0, bits = 0;
+        glGetTextureLevelParameteriv(id, level, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(id, level, GL_TEXTURE_HEIGHT, &h);
+        glGetTextureLevelParameteriv(id, level, GL_TEXTURE_DEPTH, &d);
+        for (GLenum component : {GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE,
+                                 GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_STENCIL_SIZE}) {
+            GLint b = 0;
+            glGetTextureLevelParameteriv(id, level, component, &b);
+            bits += b;
+        }
+        bytes += std::size_t(w) * std::size_t(h) * std::size_t(std::max(d, 1)) * std::size_t(bits) / 8;
+    }
+    return bytes;
 }
 
 Framebuffer createFramebuffer(std::string_view name) {

@@ -5,6 +5,7 @@
 
 #include <glad/gl.h>
 
+#include <cstddef>
 #include <string_view>
 #include <utility>
 
@@ -99,19 +100,23 @@ public:
     Texture() = default;
     static Texture create2D(GLsizei width, GLsizei height, GLenum internal_format, GLsizei levels,
                             std::string_view name);
-    // Takes ownership of a texture made elsewhere (arrays, 3D).
+    // Takes ownership of a texture made elsewhere (arrays, 3D); its storage must exist.
     static Texture adopt(GLuint id, GLsizei width, GLsizei height, GLenum internal_format) {
         return Texture(id, width, height, internal_format);
     }
     GLsizei width() const { return width_; }
     GLsizei height() const { return height_; }
     GLenum format() const { return format_; }
+    // Bytes of its storage (every level and layer), as GL describes it when it is made or adopted.
+    std::size_t bytes() const { return id() != 0 ? bytes_ : 0; }
 
 private:
     Texture(GLuint id, GLsizei width, GLsizei height, GLenum format)
-        : Object(id), width_(width), height_(height), format_(format) {}
+        : Object(id), width_(width), height_(height), format_(format), bytes_(storageBytes(id)) {}
+    static std::size_t storageBytes(GLuint id);
     GLsizei width_ = 0, height_ = 0;
     GLenum format_ = 0;
+    std::size_t bytes_ = 0;
 };
 
 Framebuffer createFramebuffer(std::string_view name);

@@ -106,6 +106,12 @@ TEST_CASE("camera path: each kind of bad line is reported with its line number")
         {"5 1 2 3 4 5 180", "fov_deg 180 is outside 1..179"},
         {"5 1 2 3 4 90.5", "pitch_deg 90.5 is outside -90..90"},
         {"5 1 2 3 4 -91", "pitch_deg -91 is outside -90..90"},
+        // Found by the camera-path fuzzer (tests/fuzz): these made sampled poses NaN.
+        {"5 1e308 2 3 4 5", "x 1e+308 is outside -1e8..1e8 m"},
+        {"5 1 2 -2e8 4 5", "z -2e+08 is outside -1e8..1e8 m"},
+        {"5 1 2 3 1e308 5", "yaw_deg 1e+308 is outside -1e6..1e6"},
+        {"1e300 1 2 3 4 5", "t 1e+300 is outside -1e12..1e12"},
+        {"2.0001 1 2 3 4 5", "by at least 0.001 s"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.line);
@@ -148,6 +154,27 @@ TEST_CASE("camera path: several bad lines are all reported") {
     REQUIRE(both.size() == 2);  // each bad field on the line
     CHECK(contains(both[0].message, "x is not a number"));
     CHECK(contains(both[1].message, "z is not a number"));
+}
+
+TEST_CASE("camera path: keys at the limits sample to finite poses everywhere") {
+    // The fuzzer's finds, at the edge of what is accepted: 1e8 m apart in a millisecond, a
+    // million degrees of yaw, times near 1e12 s.
+    const std::string text = "-1e12 1e8 -1e8 1e8 1e6 90 179\n-999999999999.99 -1e8 1e8 -1e8 -1e6 -90 1\n"
+                             "1e12 1e8 1e8 1e8 0 0 60\n";
+    InputErrors errors;
+    const CameraPath path = CameraPath::parse(text, "limits.path", errors);
+    REQUIRE(errors.empty());
+    REQUIRE(path.keys().size() == 3);
+    for (double f : {0.0, 1e-16, 1e-12, 0.25, 0.5, 0.999, 1.0}) {
+        const CameraPose p = path.sample(path.startTime() + (path.endTime() - path.startTime()) * f);
+        CAPTURE(f);
+        CHECK(std::isfinite(p.position.x));
+        CHECK(std::isfinite(p.position.y));
+        CHECK(std::isfinite(p.position.z));
+        CHECK(std::isfinite(p.yaw_deg));
+        CHECK(std::isfinite(p.pitch_deg));
+        CHECK(std::isfinite(p.fov_deg));
+    }
 }
 
 TEST_CASE("camera path: fewer than 2 keys is an error") {

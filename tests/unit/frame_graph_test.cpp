@@ -241,3 +241,23 @@ TEST_CASE("frame graph: imported resources are never pooled and keep their id") 
     CHECK(pool.createdCount() == 1);
     CHECK(g.dot().find("heightmap") != std::string::npos);
 }
+
+TEST_CASE("frame graph: texture bytes count every mip level; the pool reports what it holds") {
+    CHECK(textureBytes({64, 32, PixelFormat::RGBA16F, 1}) == 64u * 32u * 8u);
+    // 64x32, 32x16, 16x8 levels of 4-byte texels.
+    CHECK(textureBytes({64, 32, PixelFormat::Depth32F, 3}) == (64u * 32u + 32u * 16u + 16u * 8u) * 4u);
+    // Levels past 1x1 stay 1x1 (GL clamps each dimension at 1).
+    CHECK(textureBytes({4, 1, PixelFormat::R16F, 4}) == (4u + 2u + 1u + 1u) * 2u);
+    CHECK(textureBytes({1, 1, PixelFormat::RGBA32F, 1}) == 16u);
+    NullDevice device;
+    TransientPool pool(device);
+    CHECK(pool.bytes() == 0);
+    const std::uint32_t t = pool.acquireTexture({64, 32, PixelFormat::RGBA16F, 1}, "t");
+    const std::uint32_t b = pool.acquireBuffer({100}, "b");
+    CHECK(pool.bytes() == 64u * 32u * 8u + 100u);
+    pool.releaseTexture({64, 32, PixelFormat::RGBA16F, 1}, t);
+    pool.releaseBuffer({100}, b);
+    CHECK(pool.bytes() == 64u * 32u * 8u + 100u);  // free objects are still held
+    pool.clear();
+    CHECK(pool.bytes() == 0);
+}

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 using namespace vista;
@@ -276,4 +277,54 @@ TEST_CASE("heightmap: gen-heightmap writes PNG and EXR that load back, and rejec
     CHECK(runGenHeightmap(16386, 3, dir / "a.png") == 2);
     CHECK(runGenHeightmap(65, 3, dir / "a.jpg") == 2);
     CHECK(runGenHeightmap(65, 3, dir / "no-such-dir" / "a.png") == 2);
+}
+
+namespace {
+
+std::vector<unsigned char> fileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("heightmap: decoding from memory gives what loading the file gives, and the same errors") {
+    TempDir dir("memory");
+    writeImage(dir / "map.png", 3, 2, 1, OIIO::TypeDesc::UINT16, std::vector<std::uint16_t>{0, 65535, 13107, 4660, 1, 2});
+    writeImage(dir / "map.exr", 2, 2, 1, OIIO::TypeDesc::HALF, std::vector<std::uint16_t>{0x3c00, 0xc000, 0x3800, 0x5640});
+    for (const std::string name : {"map.png", "map.exr"}) {
+        CAPTURE(name);
+        InputErrors errors;
+        const Heightmap from_memory = decodeHeightmap(fileBytes(dir / name), name, 0, 0, errors);
+        for (const auto& e : errors) FAIL_CHECK(e.str());
+        REQUIRE(errors.empty());
+        const Heightmap from_file = loadOk(dir / name);
+        CHECK(from_memory.width == from_file.width);
+        CHECK(from_memory.height == from_file.height);
+        CHECK(from_memory.samples == from_file.samples);
+    }
+    const std::vector<unsigned char> raw = {0x00, 0x00, 0xff, 0xff, 0x00, 0x80, 0x01, 0x00};
+    InputErrors errors;
+    Heightmap map = decodeHeightmap(raw, "tiny.r16", 2, 2, errors);
+    REQUIRE(errors.empty());
+    CHECK(map.samples == std::vector<float>{0.0f, 1.0f, 32768.0f / 65535.0f, 1.0f / 65535.0f});
+    // Wrong size, garbage, an empty buffer and a header claiming more than the limit.
+    map = decodeHeightmap(raw, "tiny.r16", 3, 2, errors);
+    CHECK(map.samples.empty());
+    REQUIRE(errors.size() == 1);
+    CHECK(contains(errors[0].message, "is 8 bytes but raw_width x raw_height = 3x2"));
+    errors.clear();
+    const std::vector<unsigned char> garbage(64, 0x5a);
+    map = decodeHeightmap(garbage, "garbage.png", 0, 0, errors);
+    CHECK(map.samples.empty());
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == "garbage.png");
+    errors.clear();
+    map = decodeHeightmap({}, "empty.exr", 0, 0, errors);
+    CHECK(errors.size() == 1);
+    errors.clear();
+    writeImage(dir / "big.png", 64, 64, 1, OIIO::TypeDesc::UINT8, std::vector<std::uint8_t>(64 * 64, 7));
+    map = decodeHeightmap(fileBytes(dir / "big.png"), "big.png", 0, 0, errors, 1024);
+    REQUIRE(errors.size() == 1);
+    CHECK(contains(errors[0].message, "over the limit of 1024 bytes"));
 }
