@@ -20,9 +20,6 @@ std::filesystem::path captureFileName(const std::filesystem::path& out, int fram
     return out / name;
 }
 
-namespace {
-
-// Creates dir if needed and proves it writable with a probe file. "" or the reason.
 std::string checkWritableDir(const std::filesystem::path& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -35,8 +32,6 @@ std::string checkWritableDir(const std::filesystem::path& dir) {
     std::filesystem::remove(probe, ec);
     return {};
 }
-
-}  // namespace
 
 CaptureResult runCapture(const CaptureJob& job) {
     CaptureResult result;

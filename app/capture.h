@@ -31,6 +31,9 @@ struct CaptureResult {
 
 CaptureResult runCapture(const CaptureJob& job);
 
+// Creates dir if needed and proves it writable with a probe file: "" or the reason.
+std::string checkWritableDir(const std::filesystem::path& dir);
+
 // The image file for frame i: out/frame_0000.png.
 std::filesystem::path captureFileName(const std::filesystem::path& out, int frame, ImageFormat format);
 

@@ -11,6 +11,7 @@
 #include "app/bench_terrain.h"
 #include "app/camera_path.h"
 #include "app/capture.h"
+#include "app/quality.h"
 #include "app/run_window.h"
 #include "app/scene.h"
 #include "terrain/gen_heightmap.h"
@@ -113,6 +114,46 @@ int capture(const SceneOptions& scene, const CaptureOptions& opts) {
         if (!job.stats_file.empty()) std::printf("vista: wrote stats to %s\n", job.stats_file.c_str());
     }
     return r.exit_code;
+}
+
+struct QualityCliOptions {
+    std::string path, size, out, knobs, backend = "osmesa";
+    int frames = 2, warmup = 1;
+    double fps = 0.0;
+
+    void add(CLI::App* cmd, SceneOptions& scene) {
+        cmd->add_option("-c,--config", scene.config, "scene file (default: config/default.ini)");
+        cmd->add_option("--set", scene.overrides, "override a scene key: --set section.key=value (repeatable)");
+        cmd->add_option("--path", path, "camera path file (default: [capture] path)");
+        cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(CLI::Range(1, 10000));
+        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(CLI::Range(0, 1000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--size", size, "image size WxH (default: [capture] width x height)");
+        cmd->add_option("--out", out, "output directory (default: [capture] out/quality; the report files are replaced)");
+        cmd->add_option("--backend", backend, "GL context: osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+        cmd->add_option("--knobs", knobs, "comma-separated knobs to sweep, or none for the presets alone (default: all)");
+    }
+};
+
+int quality(const SceneOptions& scene, const QualityCliOptions& q) {
+    QualityOptions o;
+    if (!scene.load(o.scene)) return 2;
+    CaptureSettings& c = o.scene.capture;
+    if (!q.path.empty()) c.path = q.path;
+    if (q.fps > 0.0) c.fps = float(q.fps);
+    if (!q.size.empty() && !parseSize(q.size, c.width, c.height)) return 2;
+    o.scene_name = scene.config.empty() ? "config/default.ini" : scene.config;
+    o.frames = q.frames;
+    o.warmup = q.warmup;
+    o.out = q.out.empty() ? std::filesystem::path(c.out) / "quality" : std::filesystem::path(q.out);
+    o.backend = q.backend == "egl" ? Backend::Egl : Backend::OSMesa;
+    if (!q.knobs.empty()) {
+        o.all_knobs = false;
+        std::stringstream list(q.knobs);
+        for (std::string name; std::getline(list, name, ',');)
+            if (!name.empty() && name != "none") o.knobs.push_back(name);
+    }
+    return runQuality(o);
 }
 
 int check(const SceneOptions& scene) {
@@ -235,6 +276,12 @@ int runCli(int argc, char** argv) {
     bench_grass->add_option("--backend", grass_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_grass->add_option("--json", grass_json, "also write the results as JSON");
 
+    SceneOptions quality_scene;
+    QualityCliOptions quality_opts;
+    CLI::App* quality_cmd = app.add_subcommand(
+        "quality", "image error against the reference beside GPU time for every preset and quality knob");
+    quality_opts.add(quality_cmd, quality_scene);
+
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
@@ -256,6 +303,7 @@ int runCli(int argc, char** argv) {
 
     if (*capture_cmd) return capture(capture_scene, capture_opts);
     if (*check_cmd) return check(check_scene);
+    if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
     if (*bench_terrain) {

@@ -174,19 +174,17 @@ struct SinkData {
     TextureHandle source;
 };
 
-// "capture.readback": copies source into request's LDR or HDR buffer (a root).
-void addReadbackPass(FrameGraph& graph, TextureHandle source, const FrameRequest& request) {
-    graph.addPass<SinkData>("capture.readback",
+// "capture.readback" (or "capture.readback_hdr"): copies source into a CPU buffer (a root).
+template <typename T>
+void addReadbackPass(FrameGraph& graph, const char* name, TextureHandle source, GLenum type, std::vector<T>& out) {
+    graph.addPass<SinkData>(name,
         [&](PassBuilder& b, SinkData& d) {
             d.source = b.read(source);
             b.sideEffect();
         },
-        [&request](const SinkData& d, PassContext& ctx) {
+        [type, &out](const SinkData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.source);
-            if (request.capture_hdr)
-                readTexture(ctx.texture(d.source), desc.width, desc.height, GL_HALF_FLOAT, *request.capture_hdr);
-            else
-                readTexture(ctx.texture(d.source), desc.width, desc.height, GL_UNSIGNED_BYTE, *request.capture_ldr);
+            readTexture(ctx.texture(d.source), desc.width, desc.height, type, out);
         });
 }
 
@@ -399,8 +397,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image
         display = addDebugViewPass(graph, rc, s.debug, scene);
 
-    if (request.capture_hdr || request.capture_ldr)
-        addReadbackPass(graph, request.capture_hdr ? scene.hdr : display, request);
+    if (request.capture_ldr) addReadbackPass(graph, "capture.readback", display, GL_UNSIGNED_BYTE, *request.capture_ldr);
+    if (request.capture_hdr)
+        addReadbackPass(graph, request.capture_ldr ? "capture.readback_hdr" : "capture.readback", scene.hdr, GL_HALF_FLOAT,
+                        *request.capture_hdr);
     if (request.present) addPresentPass(graph, rc, display);
 
     graph.compile();

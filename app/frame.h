@@ -41,8 +41,10 @@ std::vector<ProgramKey> allPrograms();
 // What the caller wants out of a frame besides rendering it.
 struct FrameRequest {
     bool present = false;                          // blit to the default framebuffer (window)
-    std::vector<unsigned char>* capture_ldr = nullptr;  // RGBA8 sRGB, top row first
-    std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear), top row first
+    std::vector<unsigned char>* capture_ldr = nullptr;  // RGBA8 sRGB, top row first ("capture.readback")
+    std::vector<std::uint16_t>* capture_hdr = nullptr;  // RGBA half floats (linear, the scene's HDR target before
+                                                        // the post chain), top row first; with capture_ldr too
+                                                        // it is read by "capture.readback_hdr")
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)

@@ -1,9 +1,15 @@
 // The vista executable as a user runs it: exit codes and messages of check and capture.
 #include "gl_fixture.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <sys/wait.h>
 
 namespace {
@@ -79,4 +85,59 @@ TEST_CASE("gl: the EGL backend renders the same image as OSMesa") {
     CHECK(!a.empty());
     CHECK(a == b);  // same llvmpipe, same pixels, same encoder
     CHECK(read(dir.path / "stats.json").find("\"backend\": \"egl\"") != std::string::npos);
+}
+
+TEST_CASE("gl: vista quality writes the CSV, Markdown and chart with every preset and the chosen knobs") {
+    vista::test::TempDir dir("cli-quality");
+    // A small island keeps the full-resolution reference terrain cheap.
+    const std::string map = (dir.path / "island.png").string();
+    REQUIRE(run("gen-heightmap --size 129 --out " + map).code == 0);
+    const std::filesystem::path out = dir.path / "q";
+    // Two one-value knobs and one frame per run keep it short (the reference's LUTs dominate).
+    Run r = run("quality --size 48x27 --frames 1 --warmup 0 --knobs ssao.half_resolution,clouds.half_resolution "
+                "--set terrain.heightmap=" + map + " --out " + out.string());
+    REQUIRE_MESSAGE(r.code == 0, r.output);
+    for (const char* f : {"quality.csv", "quality_passes.csv", "quality.md", "quality.png"})
+        CHECK(std::filesystem::exists(out / f));
+
+    std::ifstream csv(out / "quality.csv");
+    std::string line;
+    REQUIRE(std::getline(csv, line));
+    std::vector<std::string> header;
+    {
+        std::stringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) header.push_back(cell);
+    }
+    const auto column = [&](const char* name) { return std::size_t(std::find(header.begin(), header.end(), name) - header.begin()); };
+    REQUIRE(column("psnr_ldr_db") < header.size());
+    REQUIRE(column("gpu_ms_median") < header.size());
+    std::map<std::string, std::vector<std::string>> rows;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+        REQUIRE(cells.size() == header.size());
+        rows[cells[0]] = cells;
+    }
+    // Five presets, SSAO and clouds at half resolution (on; the reference has them off).
+    CHECK(rows.size() == 7);
+    for (const char* name : {"low", "medium", "high", "ultra", "reference", "ssao.half_resolution=on", "clouds.half_resolution=on"})
+        CHECK_MESSAGE(rows.count(name), name);
+    CHECK(rows["reference"][column("psnr_ldr_db")] == "inf");
+    CHECK(rows["reference"][column("ssim_ldr")] == "1.000000");
+    for (const auto& [name, cells] : rows) {
+        INFO(name);
+        CHECK(std::stod(cells[column("gpu_ms_median")]) > 0.0);
+        if (name != "reference") {
+            const double db = cells[column("psnr_ldr_db")] == "inf" ? INFINITY : std::stod(cells[column("psnr_ldr_db")]);
+            CHECK(db > 10.0);  // the same frames, only a knob apart
+        }
+    }
+    CHECK(std::isfinite(std::stod(rows["low"][column("psnr_ldr_db")])));  // low differs from the reference
+
+    std::stringstream md;
+    md << std::ifstream(out / "quality.md").rdbuf();
+    CHECK(md.str().find("## Presets") != std::string::npos);
+    CHECK(md.str().find("### ssao.half_resolution") != std::string::npos);
+    CHECK(run("quality --knobs bloom.levls --out " + out.string()).code == 2);
 }

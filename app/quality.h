@@ -1,0 +1,34 @@
+// `vista quality`: renders the same camera-path frames at every preset (low, medium, high,
+// ultra, reference) and, for each quality knob the scene uses, at each preset value of that
+// knob with everything else at the reference; reports error against the reference beside GPU
+// time (app/quality_report.h) into --out.
+#pragma once
+
+#include "app/gl_context.h"
+#include "config/settings.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+struct QualityOptions {
+    Settings scene;                // the scene, [capture] path/fps/size already from the command line
+    std::string scene_name;        // for the report
+    int frames = 2;                // measured frames per run
+    int warmup = 1;                // frames rendered first at the path's first pose, not measured
+    std::filesystem::path out;     // output directory
+    Backend backend = Backend::OSMesa;
+    bool all_knobs = true;         // false: only `knobs` (empty: presets only)
+    std::vector<std::string> knobs;
+    bool progress = true;
+};
+
+// Names of the knobs a --knobs list may give (qualityKnobs()), comma-separated, for messages.
+std::string qualityKnobNames();
+
+// Returns the exit code (0; 1 runtime failure; 2 bad input).
+int runQuality(const QualityOptions& options);
+
+}  // namespace vista
