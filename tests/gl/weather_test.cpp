@@ -106,7 +106,7 @@ ViewParams view(glm::dvec3 at, double yaw, double pitch) { return ViewParams{at,
 
 }  // namespace
 
-TEST_CASE("gl: weather off adds no pass and no object; switched on and off between frames it follows") {
+TEST_CASE("gl: weather off adds no pass and no object and follows being switched on and off between frames") {
     test::TempDir dir("weather-switch");
     Settings s = weatherScene(flatMap(dir));
     s.weather.enabled = false;
