@@ -15,8 +15,8 @@ FUZZ_DIR   ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_TARGETS := ini camera_path heightmap
 SANITIZE_DIR ?= build-sanitize
-# Mesa (llvmpipe, OSMesa) keeps allocations until exit and is not built with the sanitizers:
-# leaks are not checked (tools/asan.supp would have to list all of Mesa), everything else is.
+# Mesa (llvmpipe under OSMesa) is not built with the sanitizers and keeps allocations until exit:
+# leaks are not checked in the tests; every other AddressSanitizer check is.
 export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS ?= print_stacktrace=1:halt_on_error=1
 
@@ -59,6 +59,8 @@ golden: build
 
 # Each target runs for FUZZ_SECONDS from the seeds in tests/fuzz/corpus/NAME (new inputs go to
 # $(FUZZ_DIR)/corpus/NAME); a crash is saved as $(FUZZ_DIR)/crash-NAME-* and fails the target.
+# Leaks are checked except in the heightmap target: OpenImageIO's PNG reader leaks a string when
+# libpng long-jumps out of a corrupt file (outside vista, not instrumented).
 fuzz: fuzz-deps
 	@cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DVISTA_BUILD_TESTS=OFF -DVISTA_FUZZ=ON > $(FUZZ_DIR).configure.log 2>&1 || { cat $(FUZZ_DIR).configure.log; exit 1; }
@@ -66,7 +68,8 @@ fuzz: fuzz-deps
 	@for t in $(FUZZ_TARGETS); do \
 	  mkdir -p $(FUZZ_DIR)/corpus/$$t; \
 	  echo "fuzzing $$t for $(FUZZ_SECONDS) s"; \
-	  ASAN_OPTIONS=detect_leaks=1 ./$(FUZZ_DIR)/tests/fuzz/vista_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	  leaks=1; [ $$t = heightmap ] && leaks=0; \
+	  ASAN_OPTIONS=detect_leaks=$$leaks ./$(FUZZ_DIR)/tests/fuzz/vista_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
 	    -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/crash-$$t- $(FUZZ_DIR)/corpus/$$t tests/fuzz/corpus/$$t \
 	    2> $(FUZZ_DIR)/$$t.log || { tail -50 $(FUZZ_DIR)/$$t.log; echo "make fuzz: $$t failed; the input is in $(FUZZ_DIR)/crash-$$t-*"; exit 1; }; \
 	  grep -E '^stat::number_of_executed_units|^stat::new_units_added' $(FUZZ_DIR)/$$t.log | sed "s/^/  $$t /"; \
