@@ -2,6 +2,8 @@
 // deterministic island generator used for the default scene's terrain.
 #include "terrain/heightmap.h"
 
+#include "terrain/exr_header.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -112,7 +114,26 @@ OIIO::ImageSpec openConfig() {
     return config;
 }
 
+std::string decodeImage(std::span<const unsigned char> bytes, const std::string& name, std::uint64_t max_bytes,
+                        Heightmap& map);
+
 std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
+    // OpenEXR allocates what its headers declare before checking them: an EXR is read into
+    // memory and its headers are checked first (decodeImage).
+    if (lowercase(file.extension().string()) == ".exr") {
+        std::error_code ec;
+        const std::uint64_t size = std::filesystem::file_size(file, ec);
+        if (ec) return "cannot read (" + ec.message() + ")";
+        // Uncompressed float samples with a scan-line offset table, and headers, fit in this.
+        if (size > 2 * max_bytes + (std::uint64_t(1) << 20))
+            return "is " + std::to_string(size) + " bytes, more than an EXR heightmap within the limit of " +
+                   std::to_string(max_bytes) + " bytes of samples can take";
+        std::ifstream in(file, std::ios::binary);
+        std::vector<unsigned char> bytes(size);
+        if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+            return "cannot read all " + std::to_string(size) + " bytes";
+        return decodeImage(bytes, file.string(), max_bytes, map);
+    }
     const OIIO::ImageSpec config = openConfig();
     auto in = OIIO::ImageInput::open(file.string(), &config);
     if (!in) return "cannot read (" + OIIO::geterror() + ")";
@@ -128,6 +149,8 @@ std::string decodeImage(std::span<const unsigned char> bytes, const std::string&
     if (!probe) return "is not a format OpenImageIO reads (by its extension '" + extension + "')";
     if (!probe->supports("ioproxy")) return "cannot be read from memory (format " + std::string(probe->format_name()) + ")";
     probe.reset();
+    if (lowercase(extension) == ".exr")
+        if (std::string why = checkExrHeaders(bytes, max_bytes); !why.empty()) return why;
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
     // The reader goes in the configuration too: a format's open() takes it from there.
     OIIO::Filesystem::IOProxy* proxy = &reader;
