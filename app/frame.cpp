@@ -268,7 +268,6 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
     report.counters["shadows.spot_shadowed"] = double(st.shadowed);
     report.counters["shadows.spot_unshadowed"] = double(st.unshadowed);
     report.counters["shadows.spot_caster_instances"] = double(st.caster_instances);
-    report.counters["shadows.spot_memory_bytes"] = double(st.memory_bytes);
     return input;
 }
 
@@ -421,6 +420,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (clouds_) report.counters["clouds.memory_bytes"] = double(clouds_->memoryBytes());
     if (local_lights_) report.counters["lights.memory_bytes"] = double(local_lights_->stats().memory_bytes);
     if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
+    if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
+    if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
+    if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
     if (const std::size_t postfx = postfx_.memoryBytes(); postfx > 0) report.counters["postfx.memory_bytes"] = double(postfx);
     report.counters["gpu.transient_bytes"] = double(pool_.bytes());
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
@@ -432,7 +434,8 @@ std::size_t FrameRenderer::gpuMemoryBytes() const {
            (terrain_ ? terrain_->gpuMemoryBytes() : 0) + (grass_ ? grass_->memoryBytes() : 0) +
            (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
            (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
-           (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + postfx_.memoryBytes();
+           (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
+           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes();
 }
 
 }  // namespace vista

@@ -156,7 +156,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
     u.bias = glm::vec4(s.spot_normal_offset_texels, s.spot_depth_bias_texels, s.spot_filter_radius_texels,
                        s.spot_light_size_m);
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
-    stats_.memory_bytes = std::size_t(s.spot_atlas_resolution) * std::size_t(s.spot_atlas_resolution) * 4u + sizeof u;
+    stats_.memory_bytes = memoryBytes();
 
     TextureHandle atlas = graph.importTexture(
         "shadows.spot_atlas", {s.spot_atlas_resolution, s.spot_atlas_resolution, PixelFormat::Depth32F}, atlas_.id());

@@ -102,6 +102,8 @@ public:
     // After addPass: the tile of pick k, or -1 when nothing casts into it (read as lit).
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const SpotShadowStats& stats() const { return stats_; }
+    // GPU bytes held across frames: the atlas (kept once drawn) and the uniforms.
+    std::size_t memoryBytes() const { return atlas_.bytes() + std::size_t(uniforms_.size()); }
     GLuint atlasTexture() const { return atlas_.id(); }
     int tilesPerSide() const { return tiles_per_side_; }
 

@@ -45,6 +45,7 @@ public:
                    const SunAndSky& light, const Terrain* terrain, const TerrainSettings& ts, SceneTargets& targets,
                    CounterReadback& counters, bool count);
     const WeatherStats& stats() const { return stats_; }
+    std::size_t memoryBytes() const { return std::size_t(cell_buffer_.size()); }  // GPU bytes held across frames
 
 private:
     // The camera's velocity (m/s) from the previous call: streaks follow the motion relative

@@ -145,19 +145,24 @@ std::string decodeImage(std::span<const unsigned char> bytes, const std::string&
     // Only a format whose reader takes a memory reader: OpenImageIO would otherwise open name
     // from the disk instead.
     const std::string extension = std::filesystem::path(name).extension().string();
-    auto probe = extension.size() > 1 ? OIIO::ImageInput::create(extension.substr(1)) : nullptr;
-    if (!probe) return "is not a format OpenImageIO reads (by its extension '" + extension + "')";
-    if (!probe->supports("ioproxy")) return "cannot be read from memory (format " + std::string(probe->format_name()) + ")";
-    probe.reset();
+    auto in = extension.size() > 1 ? OIIO::ImageInput::create(extension.substr(1)) : nullptr;
+    if (!in) return "is not a format OpenImageIO reads (by its extension '" + extension + "')";
+    if (!in->supports("ioproxy")) return "cannot be read from memory (format " + std::string(in->format_name()) + ")";
     if (lowercase(extension) == ".exr")
         if (std::string why = checkExrHeaders(bytes, max_bytes); !why.empty()) return why;
+    // Only the reader the extension names sees the bytes: ImageInput::open would, when that one
+    // fails, try every format OpenImageIO has (DICOM, FITS, camera raw, ...) on them.
     OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
-    // The reader goes in the configuration too: a format's open() takes it from there.
+    if (!in->set_ioproxy(&reader)) return "cannot be read from memory (" + in->geterror() + ")";
+    // The reader goes in the configuration too: some formats' open() take it from there.
     OIIO::Filesystem::IOProxy* proxy = &reader;
     OIIO::ImageSpec config = openConfig();
     config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto in = OIIO::ImageInput::open(name, &config, proxy);
-    if (!in) return "cannot read (" + OIIO::geterror() + ")";
+    OIIO::ImageSpec spec;
+    if (!in->open(name, spec, config)) {
+        const std::string error = in->geterror();
+        return "cannot read as " + std::string(in->format_name()) + " (" + (error.empty() ? "not a valid file" : error) + ")";
+    }
     std::string why = readImage(*in, max_bytes, map);
     in->close();
     return why;

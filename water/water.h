@@ -74,6 +74,7 @@ public:
     void addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
 
     const WaterStats& stats() const { return stats_; }
+    std::size_t memoryBytes() const { return std::size_t(indices_.size()) + std::size_t(uniforms_.size()); }  // GPU bytes held
     const WaveSet& waves() const { return waves_; }
     // The uniform block as uploaded this frame (tests bind it for probes).
     GLuint uniformBuffer() const { return uniforms_.id(); }

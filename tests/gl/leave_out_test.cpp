@@ -78,14 +78,16 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
     REQUIRE(base.memory > 0.0);
     // Every memory counter adds up to the total.
     double parts = counter(base.report, "gpu.transient_bytes");
-    for (const char* c : {"terrain", "grass", "sky", "clouds", "lights", "shadows", "postfx"})
-        parts += std::max(counter(base.report, std::string(c) + ".memory_bytes"), 0.0);
+    for (const char* c : {"terrain.memory_bytes", "grass.memory_bytes", "sky.memory_bytes", "clouds.memory_bytes",
+                          "lights.memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "water.memory_bytes",
+                          "weather.memory_bytes", "postfx.memory_bytes"})
+        parts += std::max(counter(base.report, c), 0.0);
     CHECK(parts <= base.memory);
     CHECK(parts >= base.memory - 65536.0);  // the rest: frame uniforms and counter buffers
     MESSAGE("all features on: gpu.memory_bytes " << base.memory << " (transient " << counter(base.report, "gpu.transient_bytes") << ")");
 
     const std::vector<Feature> features = {
-        {"terrain", [](Settings& s) { s.terrain.enabled = false; }, {"terrain", "grass", "shadows"}, "terrain.memory_bytes",
+        {"terrain", [](Settings& s) { s.terrain.enabled = false; }, {"terrain", "grass", "shadows", "weather.splash"}, "terrain.memory_bytes",
          [](FrameRenderer& r) { return r.terrain() == nullptr; }},
         {"grass", [](Settings& s) { s.grass.enabled = false; }, {"grass"}, "grass.memory_bytes",
          [](FrameRenderer& r) { return r.grass() == nullptr; }},
@@ -96,8 +98,14 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
         {"cloud shadows", [](Settings& s) { s.clouds.shadows = false; }, {"clouds.shadow"}, nullptr, nullptr},
         {"shadows", [](Settings& s) { s.shadows.enabled = false; }, {"shadows"}, "shadows.memory_bytes",
          [](FrameRenderer& r) { return r.sunShadows() == nullptr; }},
-        {"lights", [](Settings& s) { s.lights.enabled = false; }, {"lights"}, "lights.memory_bytes",
-         [](FrameRenderer& r) { return r.localLights() == nullptr; }},
+        {"lights", [](Settings& s) { s.lights.enabled = false; }, {"lights", "shadows.spot_atlas"}, "lights.memory_bytes",
+         [](FrameRenderer& r) { return r.localLights() == nullptr && r.spotShadows() == nullptr; }},
+        {"spot shadows", [](Settings& s) { s.shadows.spot_enabled = false; }, {"shadows.spot_atlas"},
+         "shadows.spot_memory_bytes", [](FrameRenderer& r) { return r.spotShadows() == nullptr; }},
+        {"water", [](Settings& s) { s.water.enabled = false; }, {"water"}, "water.memory_bytes",
+         [](FrameRenderer& r) { return r.water() == nullptr; }},
+        {"weather", [](Settings& s) { s.weather.enabled = false; }, {"weather"}, "weather.memory_bytes",
+         [](FrameRenderer& r) { return r.weather() == nullptr; }},
         {"aerial perspective", [](Settings& s) { s.sky.aerial_perspective = false; }, {"sky.aerial", "sky.aerial_volume"},
          nullptr, nullptr},
         {"debug grid", [](Settings& s) { s.debug.grid = false; }, {"debug.grid"}, nullptr, nullptr},

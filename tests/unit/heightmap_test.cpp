@@ -328,3 +328,29 @@ TEST_CASE("heightmap: decoding from memory gives what loading the file gives, an
     REQUIRE(errors.size() == 1);
     CHECK(contains(errors[0].message, "over the limit of 1024 bytes"));
 }
+
+TEST_CASE("heightmap: from memory, only the reader the extension names sees the bytes") {
+    // OpenImageIO's ImageInput::open tries every format it has when the named one fails; the
+    // fuzzer found inputs on which one of those (through DICOM, FITS, camera raw readers) grew
+    // the memory past 2 GB. A PNG named .tif is refused by the TIFF reader, not read as PNG.
+    TempDir dir("extension");
+    writeImage(dir / "map.png", 3, 2, 1, OIIO::TypeDesc::UINT16, std::vector<std::uint16_t>{0, 65535, 13107, 4660, 1, 2});
+    const std::vector<unsigned char> png = fileBytes(dir / "map.png");
+    InputErrors errors;
+    Heightmap map = decodeHeightmap(png, "map.tif", 0, 0, errors);
+    CHECK(map.samples.empty());
+    REQUIRE(errors.size() == 1);
+    CHECK(contains(errors[0].message, "cannot read as tiff"));
+    errors.clear();
+    // The fuzzer's input (after its 5 bytes of format and raw size): not a PGM.
+    const std::vector<unsigned char> fuzzed = {0x2f, 0x3f, 0x31, 0x01, 0x02, 0x00, 0x00, 0x13, 0x73, 0x69, 0x6e, 0x67, 0x00, 0x00,
+                                               0x00, 0x13, 0xff, 0xd3, 0xff, 0xff, 0xff, 0x13, 0x00, 0xb1, 0xb8, 0x43, 0x60, 0x82};
+    map = decodeHeightmap(fuzzed, "fuzz.pgm", 0, 0, errors);
+    CHECK(map.samples.empty());
+    REQUIRE(errors.size() == 1);
+    CHECK(contains(errors[0].message, "cannot read as pnm"));
+    errors.clear();
+    map = decodeHeightmap(png, "map.png", 0, 0, errors);
+    CHECK(errors.empty());
+    CHECK(map.width == 3);
+}
