@@ -388,7 +388,8 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
 
-    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth);
+    const bool shown = request.capture_ldr || request.present;  // else the graph culls the chain
+    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth, shown);
     if (s.debug.view == DebugView::ShadowMap)
         display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
     else if (s.debug.view == DebugView::SpotAtlas)

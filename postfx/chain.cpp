@@ -13,11 +13,13 @@
 namespace vista {
 
 TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
-                                   TextureHandle depth) {
+                                   TextureHandle depth, bool shown) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
     const bool reset = !has_time_ || dt < 0.0;
-    last_time_s_ = rc.time_s;
-    has_time_ = true;
+    if (shown) {
+        last_time_s_ = rc.time_s;
+        has_time_ = true;
+    }
 
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded

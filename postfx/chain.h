@@ -28,9 +28,11 @@ public:
     // exposure adaptation: its change since the last call is the frame time (the first call,
     // or time going backwards, takes the metered exposure at once).
     // depth: the scene's depth (reversed-Z) for the effects that need it (depth of field);
-    // without one those effects add no pass.
+    // without one those effects add no pass. shown: something reads the returned image this
+    // frame; when nothing does (an HDR-only capture) the graph culls the chain, and its clock
+    // stays put so the adapting states (exposure, focus) catch up on the next shown frame.
     TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
-                            TextureHandle depth = {});
+                            TextureHandle depth = {}, bool shown = true);
     // Auto exposure's state, while auto exposure is in use (null otherwise).
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
     // Depth of field's autofocus state, while depth of field is in use (null otherwise).

@@ -35,7 +35,7 @@ struct Bench {
     ViewParams camera;  // the view the passes see (its size is the image's)
 
     template <class AddPasses>
-    std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add) {
+    std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add, bool read = true) {
         gl::Texture input = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "postfx test input");
         glTextureSubImage2D(input.id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
         ViewParams view = camera;
@@ -48,7 +48,7 @@ struct Bench {
             TextureHandle t;
         };
         std::vector<float> result;
-        graph.addPass<Data>("test.readback",
+        if (read) graph.addPass<Data>("test.readback",
             [&](PassBuilder& b, Data& d) {
                 d.t = b.read(out);
                 b.sideEffect();
@@ -65,10 +65,12 @@ struct Bench {
         executed = graph.executedPasses();
         return result;
     }
-    std::vector<float> chainRun(const std::vector<float>& rgba, int w, int h, const Settings& s, double time_s = 0.0) {
+    // shown = false: nothing reads the chain's image (an HDR-only capture), the graph culls it.
+    std::vector<float> chainRun(const std::vector<float>& rgba, int w, int h, const Settings& s, double time_s = 0.0,
+                                bool shown = true) {
         return run(rgba, w, h, time_s, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
-            return chain.addPasses(g, rc, in, s);
-        });
+            return chain.addPasses(g, rc, in, s, {}, shown);
+        }, shown);
     }
 };
 
@@ -218,6 +220,17 @@ TEST_CASE("gl: auto exposure adapts exponentially in time, independent of the fr
 
     coarse.chainRun(bright, 16, 16, s, 0.0);  // time went back (a restart): take the target at once
     CHECK(coarse.chain.autoExposure()->read().adapted_log2 == coarse.chain.autoExposure()->read().target_log2);
+
+    // Frames nobody shows (culled chain) do not eat adaptation time: shown at 10 and 11 s with
+    // hidden frames between, the exposure adapts as far as over the one 1 s step.
+    Bench hidden;
+    hidden.chainRun(dark, 16, 16, s, 10.0);
+    for (int i = 1; i < 10; ++i) {
+        hidden.chainRun(bright, 16, 16, s, 10.0 + 0.1 * i, false);
+        CHECK(hidden.executed.empty());
+    }
+    hidden.chainRun(bright, 16, 16, s, 11.0);
+    CHECK(hidden.chain.autoExposure()->read().adapted_log2 == doctest::Approx(b.adapted_log2).epsilon(1e-4));
 }
 
 TEST_CASE("gl: every tone map is monotonic and maps 0 to 0") {
