@@ -116,7 +116,7 @@ const QualityKnob kKnobs[] = {
      [](Settings& s, double v, const Settings&) { s.clouds.shadow_size = toInt(v); },
      [](const Settings& s) { return double(s.clouds.shadow_size); },
      [](const Settings& s) { return cloudsOn(s) && s.clouds.shadows; }},
-    {"clouds.low.octaves", "", {3, 3, 4, 5, 8},
+    {"clouds.low.octaves", "", {4, 4, 4, 5, 8},
      [](Settings& s, double v, const Settings&) { s.clouds.low.octaves = toInt(v); },
      [](const Settings& s) { return double(s.clouds.low.octaves); },
      [](const Settings& s) { return cloudsOn(s) && s.clouds.low.enabled; }},
