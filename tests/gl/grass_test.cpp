@@ -119,7 +119,7 @@ ViewParams meadowView(glm::dvec3 origin, double ground) {
 
 }  // namespace
 
-TEST_CASE("gl: grass passes run after the terrain with finite output; off, no pass and no buffers") {
+TEST_CASE("gl: grass passes run after the terrain with finite output, off, no pass and no buffers") {
     test::TempDir dir("grass-passes");
     auto meadow = writeMap(dir, "meadow.png", [](int, int) { return 0.3f; });
     Settings s = grassScene(meadow);

@@ -88,7 +88,7 @@ bool anyWater(const std::vector<std::string>& v) {
 
 }  // namespace
 
-TEST_CASE("gl: water passes run between the lighting and the aerial perspective; off, no pass and no water") {
+TEST_CASE("gl: water passes run between the lighting and the aerial perspective, off, no pass and no water") {
     test::TempDir dir("water-passes");
     Settings s = islandScene(writeIsland(dir));
     const ViewParams view{{-220.0, 25.0, 220.0}, 45.0, -8.0, 60.0, 0.5, 160, 90};
@@ -158,7 +158,7 @@ TEST_CASE("gl: water output is finite at the water line, under it, at grazing an
     }
 }
 
-TEST_CASE("gl: water seen from under the surface turns the image blue-green; above it the tint pass stays out") {
+TEST_CASE("gl: water seen from under the surface turns the image blue-green, above it the tint pass stays out") {
     test::TempDir dir("water-under");
     Settings s = islandScene(writeIsland(dir));
     const ViewParams below{{-200.0, -5.0, 200.0}, 45.0, 0.0, 60.0, 0.2, 160, 90};

@@ -398,7 +398,7 @@ TEST_CASE("sun position: sunrise azimuth, noon elevation and vista's axes") {
     CHECK(glm::length(any.direction) == doctest::Approx(1.0));
 }
 
-TEST_CASE("atmosphere: the moon's direction follows its age from the sun; the celestial pole stands at the latitude") {
+TEST_CASE("atmosphere: the moon's direction follows its age from the sun, the celestial pole stands at the latitude") {
     SkySettings s;
     s.sun_mode = SunMode::Time;
     s.latitude_deg = 45.0f;

@@ -79,7 +79,7 @@ TEST_CASE("camera: the glide is frame-rate independent and looking clamps pitch"
     CHECK(a.fov_deg == doctest::Approx(5.0));
 }
 
-TEST_CASE("camera: terrain following keeps the eye height; the free camera stays above ground") {
+TEST_CASE("camera: terrain following keeps the eye height, the free camera stays above ground") {
     CameraSettings s;
     s.near_m = 0.1f;
     CameraController c(s);

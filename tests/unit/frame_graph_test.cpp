@@ -242,7 +242,7 @@ TEST_CASE("frame graph: imported resources are never pooled and keep their id") 
     CHECK(g.dot().find("heightmap") != std::string::npos);
 }
 
-TEST_CASE("frame graph: texture bytes count every mip level; the pool reports what it holds") {
+TEST_CASE("frame graph: texture bytes count every mip level, the pool reports what it holds") {
     CHECK(textureBytes({64, 32, PixelFormat::RGBA16F, 1}) == 64u * 32u * 8u);
     // 64x32, 32x16, 16x8 levels of 4-byte texels.
     CHECK(textureBytes({64, 32, PixelFormat::Depth32F, 3}) == (64u * 32u + 32u * 16u + 16u * 8u) * 4u);

@@ -145,7 +145,7 @@ TEST_CASE("grass: the box ahead of the camera holds every visible ground point w
     CHECK(total_hits > 100000);
 }
 
-TEST_CASE("grass: the grass weight is the terrain shader's grass layer share; none on sand, rock, snow, slopes") {
+TEST_CASE("grass: the grass weight is the terrain shader's grass layer share, none on sand, rock, snow, slopes") {
     material::Bands b;
     const double rock_slope = 0.75;
     // The terrain shader blends layer floor(L) into the next by fract(L), order sand, grass,

@@ -121,7 +121,7 @@ TEST_CASE("heightmap: float EXR keeps its values exactly") {
     CHECK(map.samples == values);
 }
 
-TEST_CASE("heightmap: a grey image saved as RGB loads; RGB with differing channels names the texel") {
+TEST_CASE("heightmap: a grey image saved as RGB loads, RGB with differing channels names the texel") {
     TempDir dir("rgb");
     std::vector<std::uint8_t> grey{10, 10, 10, 20, 20, 20, 30, 30, 30, 40, 40, 40};
     writeImage(dir / "grey.png", 2, 2, 3, OIIO::TypeDesc::UINT8, grey);

@@ -110,7 +110,7 @@ TEST_CASE("spot shadows: the tile's matrix is the same 10,000 km out as at the o
         for (int r = 0; r < 4; ++r) CHECK(b.view_proj[c][r] == doctest::Approx(a.view_proj[c][r]).epsilon(1e-9));
 }
 
-TEST_CASE("spot shadows: the largest lights on screen get the tiles; the rest are counted as unshadowed") {
+TEST_CASE("spot shadows: the largest lights on screen get the tiles, the rest are counted as unshadowed") {
     const ViewParams view{{0.0, 10.0, 0.0}, 0.0, 0.0, 60.0, 0.1, 320, 180};  // looks along -z
     const ViewMatrices m = viewMatrices(view);
     std::vector<Light> lights;

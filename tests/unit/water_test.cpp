@@ -117,7 +117,7 @@ TEST_CASE("water: one Gerstner wave is the closed-form trochoid") {
           doctest::Approx(evaluateWaves(set, x0, 0.0).displacement.y).epsilon(1e-9));
 }
 
-TEST_CASE("water: normals and Jacobians match finite differences; crests never fold") {
+TEST_CASE("water: normals and Jacobians match finite differences, crests never fold") {
     WaterSettings s;
     s.choppiness = 2.0f;  // asks for more than the cap allows
     s.wind_speed_m_s = 12.0f;
