@@ -67,14 +67,21 @@ void decodeRaw16(std::span<const unsigned char> bytes, int width, int height, He
         map.samples[i] = float(unsigned(bytes[2 * i]) | unsigned(bytes[2 * i + 1]) << 8) / 65535.0f;
 }
 
+// The first size bytes of file (its size, already checked against a limit).
+std::string readBytes(const std::filesystem::path& file, std::uint64_t size, std::vector<unsigned char>& bytes) {
+    std::ifstream in(file, std::ios::binary);
+    bytes.resize(size);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) return "cannot read all " + std::to_string(size) + " bytes";
+    return {};
+}
+
 std::string loadRaw16(const std::filesystem::path& file, int width, int height, std::uint64_t max_bytes, Heightmap& map) {
     std::error_code ec;
     std::uint64_t actual = width < 2 || height < 2 ? 0 : std::filesystem::file_size(file, ec);
     if (ec) return "cannot read (" + ec.message() + ")";
     if (std::string why = checkRawSize(width, height, actual, max_bytes); !why.empty()) return why;
-    std::ifstream in(file, std::ios::binary);
-    std::vector<unsigned char> bytes(actual);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(actual))) return "cannot read all " + std::to_string(actual) + " bytes";
+    std::vector<unsigned char> bytes;
+    if (std::string why = readBytes(file, actual, bytes); !why.empty()) return why;
     decodeRaw16(bytes, width, height, map);
     return {};
 }
@@ -115,32 +122,6 @@ OIIO::ImageSpec openConfig() {
 }
 
 std::string decodeImage(std::span<const unsigned char> bytes, const std::string& name, std::uint64_t max_bytes,
-                        Heightmap& map);
-
-std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
-    // OpenEXR allocates what its headers declare before checking them: an EXR is read into
-    // memory and its headers are checked first (decodeImage).
-    if (lowercase(file.extension().string()) == ".exr") {
-        std::error_code ec;
-        const std::uint64_t size = std::filesystem::file_size(file, ec);
-        if (ec) return "cannot read (" + ec.message() + ")";
-        // Uncompressed float samples with a scan-line offset table, and headers, fit in this.
-        if (size > 2 * max_bytes + (std::uint64_t(1) << 20))
-            return "is " + std::to_string(size) + " bytes, more than an EXR heightmap within the limit of " +
-                   std::to_string(max_bytes) + " bytes of samples can take";
-        std::ifstream in(file, std::ios::binary);
-        std::vector<unsigned char> bytes(size);
-        if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
-            return "cannot read all " + std::to_string(size) + " bytes";
-        return decodeImage(bytes, file.string(), max_bytes, map);
-    }
-    const OIIO::ImageSpec config = openConfig();
-    auto in = OIIO::ImageInput::open(file.string(), &config);
-    if (!in) return "cannot read (" + OIIO::geterror() + ")";
-    return readImage(*in, max_bytes, map);
-}
-
-std::string decodeImage(std::span<const unsigned char> bytes, const std::string& name, std::uint64_t max_bytes,
                         Heightmap& map) {
     // Only a format whose reader takes a memory reader: OpenImageIO would otherwise open name
     // from the disk instead.
@@ -166,6 +147,27 @@ std::string decodeImage(std::span<const unsigned char> bytes, const std::string&
     std::string why = readImage(*in, max_bytes, map);
     in->close();
     return why;
+}
+
+std::string loadImage(const std::filesystem::path& file, std::uint64_t max_bytes, Heightmap& map) {
+    // OpenEXR allocates what its headers declare before checking them: an EXR is read into
+    // memory and its headers are checked first (decodeImage).
+    if (lowercase(file.extension().string()) == ".exr") {
+        std::error_code ec;
+        const std::uint64_t size = std::filesystem::file_size(file, ec);
+        if (ec) return "cannot read (" + ec.message() + ")";
+        // Uncompressed float samples with a scan-line offset table, and headers, fit in this.
+        if (size > 2 * max_bytes + (std::uint64_t(1) << 20))
+            return "is " + std::to_string(size) + " bytes, more than an EXR heightmap within the limit of " +
+                   std::to_string(max_bytes) + " bytes of samples can take";
+        std::vector<unsigned char> bytes;
+        if (std::string why = readBytes(file, size, bytes); !why.empty()) return why;
+        return decodeImage(bytes, file.string(), max_bytes, map);
+    }
+    const OIIO::ImageSpec config = openConfig();
+    auto in = OIIO::ImageInput::open(file.string(), &config);
+    if (!in) return "cannot read (" + OIIO::geterror() + ")";
+    return readImage(*in, max_bytes, map);
 }
 
 // The checks every heightmap passes after decoding: finite samples only.
