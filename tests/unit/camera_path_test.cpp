@@ -1,6 +1,7 @@
 // Camera path parsing (errors located by line) and interpolation (through the keys, C1 in
 // time, shortest-arc yaw, no NaN on repeated positions).
 #include "app/camera_path.h"
+#include "app/scene.h"
 #include "terrain/heightmap.h"
 
 #include <doctest/doctest.h>
@@ -190,15 +191,15 @@ TEST_CASE("camera path: fewer than 2 keys is an error") {
 
 TEST_CASE("camera path: a missing file is one error with no line") {
     InputErrors errors;
-    const CameraPath path = CameraPath::load(VISTA_ROOT_DIR "/no/such/file.path", errors);
+    const CameraPath path = CameraPath::load((vista::vistaRoot() / "no/such/file.path"), errors);
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].line == 0);
-    CHECK(errors[0].file == VISTA_ROOT_DIR "/no/such/file.path");
+    CHECK(errors[0].file == (vista::vistaRoot() / "no/such/file.path").string());
     CHECK_MESSAGE(contains(errors[0].message, std::strerror(ENOENT)), errors[0].message);
     CHECK(path.empty());
 
     InputErrors dir_errors;
-    CameraPath::load(VISTA_ROOT_DIR "/tests", dir_errors);
+    CameraPath::load(vista::vistaRoot() / "tests", dir_errors);
     REQUIRE(dir_errors.size() == 1);
     CHECK(dir_errors[0].line == 0);
     CHECK_MESSAGE(contains(dir_errors[0].message, std::strerror(EISDIR)), dir_errors[0].message);
@@ -343,12 +344,12 @@ TEST_CASE("camera path: empty and one-key paths") {
 
 TEST_CASE("camera path: the default path flies over the default island without touching it") {
     InputErrors errors;
-    const CameraPath path = CameraPath::load(VISTA_ROOT_DIR "/data/paths/default.path", errors);
+    const CameraPath path = CameraPath::load(vista::vistaRoot() / "data/paths/default.path", errors);
     for (const auto& e : errors) MESSAGE(e.str());
     REQUIRE(errors.empty());
     CHECK(path.keys().size() >= 6);
     // The island of config/default.ini: 8192 m across, 600 m height scale, sea level at y = 0.
-    const Heightmap map = loadHeightmap(VISTA_ROOT_DIR "/data/heightmaps/island.png", 0, 0, errors);
+    const Heightmap map = loadHeightmap(vista::vistaRoot() / "data/heightmaps/island.png", 0, 0, errors);
     REQUIRE(errors.empty());
     const double size = 8192.0, texel = size / double(map.width - 1);
     for (double t = path.startTime(); t <= path.endTime(); t += 0.1) {
