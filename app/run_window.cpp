@@ -3,6 +3,7 @@
 
 #include "app/camera_controller.h"
 #include "app/frame.h"
+#include "app/frame_rate.h"
 #include "app/gl_context.h"
 #include "app/image_writer.h"
 #include "app/panel.h"
@@ -136,14 +137,17 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
     double time_s = 0.0, last_x = 0.0, last_y = 0.0;
     bool paused = false, vsync = s.window.vsync;
     int copy_w = 0, copy_h = 0;
+    FrameRateMeter frame_rate;
     auto last = std::chrono::steady_clock::now();
     glfwGetCursorPos(window, &last_x, &last_y);
 
     while (!glfwWindowShouldClose(window)) {
         glfwPollEvents();
         auto now = std::chrono::steady_clock::now();
-        double dt = std::min(std::chrono::duration<double>(now - last).count(), 0.25);
+        const double wall_s = std::chrono::duration<double>(now - last).count();
+        double dt = std::min(wall_s, 0.25);  // the animation step; the panel's fps uses wall_s
         last = now;
+        frame_rate.addFrame(wall_s);
 
         if (ev.toggle_panel) panel.visible = !panel.visible;
         if (ev.reload) renderer.shaders().reloadAll();
@@ -191,7 +195,7 @@ int runWindow(Settings s, const std::filesystem::path& scene_file) {
         for (const auto& c : renderer.counters().collect()) stats.counters[c.name] = double(c.value);
         for (const auto& [name, value] : report.counters) stats.counters[name] = value;
         stats.cpu_ms += (cpu_ms - stats.cpu_ms) * 0.1;
-        stats.fps += (1.0 / std::max(dt, 1e-6) - stats.fps) * 0.1;
+        stats.fps = frame_rate.fps();
         stats.time_s = time_s;
         stats.paused = paused;
         stats.culled = report.culled;

@@ -29,7 +29,10 @@ void RunStats::addFrame(std::uint64_t index, double cpu_ms) {
 }
 
 void RunStats::addCounter(std::uint64_t index, const std::string& name, double value) {
-    frames_[index].counters[name] = value;
+    // GPU counters arrive frames late, so a warm-up frame's readback can come in after the first
+    // recorded frame: it must not become a frame entry of its own (cpu_ms 0, no passes).
+    auto it = frames_.find(index);
+    if (it != frames_.end()) it->second.counters[name] = value;
 }
 
 void RunStats::addTimings(const std::vector<FrameTiming>& timings) {

@@ -38,6 +38,8 @@ public:
 
     // A frame's CPU time and the counters known right away.
     void addFrame(std::uint64_t index, double cpu_ms);
+    // A counter of a frame added with addFrame(); those of other frames (warm-up frames whose
+    // readback arrives late) are dropped.
     void addCounter(std::uint64_t index, const std::string& name, double value);
     // GPU results that arrived (frames later).
     void addTimings(const std::vector<FrameTiming>& timings);
