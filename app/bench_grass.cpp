@@ -12,7 +12,9 @@
 
 namespace vista {
 
-int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
+int runBenchGrass(const BenchScene& isolated, const BenchGrassOptions& o) {
+    const Settings& scene = isolated.settings;
+    std::printf("%s", isolated.summary().c_str());
     std::string error;
     auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
     if (!context) return fail(1, error);
@@ -76,6 +78,7 @@ int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
                           {"radius_m", s.grass.radius_m},
                           {"reference_copy_ms", copy_ms},
                           {"rows", rows}};
+    out["scene"] = isolated.json();
     return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 

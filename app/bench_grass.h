@@ -2,6 +2,7 @@
 // reference copies) at a few densities, from a meadow of the scene's terrain at eye height.
 #pragma once
 
+#include "app/bench_scene.h"
 #include "app/gl_context.h"
 #include "config/settings.h"
 
@@ -19,6 +20,7 @@ struct BenchGrassOptions {
 };
 
 // Returns the exit code.
-int runBenchGrass(const Settings& scene, const BenchGrassOptions& options);
+// scene: the isolated scene (app/bench_scene.h), stated in the output and the JSON.
+int runBenchGrass(const BenchScene& scene, const BenchGrassOptions& options);
 
 }  // namespace vista

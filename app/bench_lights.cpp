@@ -50,7 +50,9 @@ struct Result {
 
 }  // namespace
 
-int runBenchLights(const Settings& scene, const BenchLightsOptions& o) {
+int runBenchLights(const BenchScene& isolated, const BenchLightsOptions& o) {
+    const Settings& scene = isolated.settings;
+    std::printf("%s", isolated.summary().c_str());
     std::string error;
     auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
     if (!context) return fail(1, error);
@@ -191,6 +193,7 @@ int runBenchLights(const Settings& scene, const BenchLightsOptions& o) {
                               {"radius_m", o.radius_m},
                               {"renderer", context->renderer()},
                               {"backend", backendName(o.backend)}};
+        out["scene"] = isolated.json();
         std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
         if (!problem.empty()) return fail(1, problem);
     }

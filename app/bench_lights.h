@@ -4,6 +4,7 @@
 // evaluations against the pairs that really need shading, CPU build cost and GPU memory.
 #pragma once
 
+#include "app/bench_scene.h"
 #include "app/gl_context.h"
 #include "config/settings.h"
 
@@ -24,6 +25,7 @@ struct BenchLightsOptions {
 };
 
 // Returns the exit code.
-int runBenchLights(const Settings& scene, const BenchLightsOptions& options);
+// scene: the isolated scene (app/bench_scene.h), stated in the output and the JSON.
+int runBenchLights(const BenchScene& scene, const BenchLightsOptions& options);
 
 }  // namespace vista

@@ -205,7 +205,9 @@ nlohmann::json spotBench(FrameRenderer& r, const Settings& base, int width, int 
 
 }  // namespace
 
-int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
+int runBenchShadows(const BenchScene& isolated, const BenchShadowsOptions& o) {
+    const Settings& scene = isolated.settings;
+    std::printf("%s", isolated.summary().c_str());
     std::string error;
     auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
     if (!context) {
@@ -361,6 +363,7 @@ int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
         out["frame_cost"] = costs;
     }
     std::printf("reference_copy_ms %.4f\n", copy_ms);
+    out["scene"] = isolated.json();
     return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 

@@ -7,6 +7,7 @@
 // an 8192-texel 64-tap atlas per filter and atlas size.
 #pragma once
 
+#include "app/bench_scene.h"
 #include "app/gl_context.h"
 #include "config/settings.h"
 
@@ -22,6 +23,7 @@ struct BenchShadowsOptions {
 };
 
 // Returns the exit code.
-int runBenchShadows(const Settings& scene, const BenchShadowsOptions& options);
+// scene: the isolated scene (app/bench_scene.h), stated in the output and the JSON.
+int runBenchShadows(const BenchScene& scene, const BenchShadowsOptions& options);
 
 }  // namespace vista

@@ -59,7 +59,15 @@ constexpr View kViews[] = {
 
 }  // namespace
 
-int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
+std::vector<std::string> benchSkyPresetNames() {
+    std::vector<std::string> names;
+    for (const Preset& p : kPresets) names.push_back(p.name);
+    return names;
+}
+
+int runBenchSky(const BenchScene& isolated, const BenchSkyOptions& o) {
+    const Settings& scene = isolated.settings;
+    std::printf("%s", isolated.summary().c_str());
     std::string error;
     auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
     if (!context) {
@@ -89,13 +97,13 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
 
     std::fprintf(stderr, "bench sky: building the CPU reference...\n");
     const MultipleScatteringTable table(atmosphereParams(base.sky));
-    constexpr int kRefW = 128, kRefH = 72;
+    const int ref_w = o.psnr_width, ref_h = o.psnr_height;
     std::vector<std::vector<glm::vec3>> references;
     for (const View& v : kViews) {
         Settings s = base;
         s.sky.sun_elevation_deg = v.sun_elevation;
         references.push_back(
-            referenceSkyImage(s.sky, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, kRefW, kRefH}, table));
+            referenceSkyImage(s.sky, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, ref_w, ref_h}, table));
     }
 
     const double copy_ms = renderer.measureReferenceCopy(o.width, o.height);
@@ -103,6 +111,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
     std::printf("%-8s %-26s %9s %9s %9s %9s %12s %12s %12s\n", "preset", "T / MS / view (steps)", "noon_dB", "sunset_dB",
                 "twil_dB", "psnr_min", "lut_build_ms", "sky_copies", "+view_copies");
     for (const Preset& preset : kPresets) {
+        if (!o.presets.empty() && std::find(o.presets.begin(), o.presets.end(), preset.name) == o.presets.end()) continue;
         Settings s = base;
         apply(preset, s.sky);
         nlohmann::json psnr = nlohmann::json::object();
@@ -113,7 +122,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
         for (std::size_t i = 0; i < std::size(kViews); ++i) {
             const View& v = kViews[i];
             s.sky.sun_elevation_deg = v.sun_elevation;
-            renderer.render(s, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, kRefW, kRefH}, 0.0, request);
+            renderer.render(s, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, ref_w, ref_h}, 0.0, request);
             double db = skyPsnrDb(hdr, references[i]);
             psnr[v.name] = db;
             psnr_min = std::min(psnr_min, db);
@@ -173,7 +182,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
     clouds.sky.sun_azimuth_deg = 180.0f;
     clouds.sky.sun_elevation_deg = 25.0f;
     clouds.clouds.enabled = true;
-    if (cloudsActive(clouds.clouds)) {
+    if (o.clouds && cloudsActive(clouds.clouds)) {
         const ViewParams up{{0.0, 2.0, 0.0}, 0.0, 25.0, 60.0, 0.5, o.width, o.height};
         std::vector<std::uint16_t> hdr;
         FrameRequest request;
@@ -207,13 +216,14 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
         {"renderer", context->renderer()},
         {"backend", backendName(o.backend)},
         {"size", {o.width, o.height}},
-        {"psnr_size", {kRefW, kRefH}},
+        {"psnr_size", {ref_w, ref_h}},
         {"psnr_definition", "10 log10(1 / mean(((gpu - ref) / max(ref))^2)), linear radiance, RGB, sun disk masked"},
         {"reference_copy_ms", copy_ms},
         {"presets", presets},
         {"clouds", cloud_rows},
     };
     std::printf("reference_copy_ms %.4f\n", copy_ms);
+    out["scene"] = isolated.json();
     return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 

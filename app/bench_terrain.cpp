@@ -55,7 +55,9 @@ double maxErrorPx(FrameRenderer& renderer, Settings s, const ViewParams& view) {
 
 }  // namespace
 
-int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
+int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
+    const Settings& scene = isolated.settings;
+    std::printf("%s", isolated.summary().c_str());
     constexpr int kWidth = 640, kHeight = 360;
     std::string error;
     auto context = createContext(o.backend, ContextOptions{kWidth, kHeight, false, false, false, false, "bench"}, error);
@@ -161,6 +163,7 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
         std::string value = it.value().dump();
         std::printf("%-32s %s\n", it.key().c_str(), value.c_str());
     }
+    out["scene"] = isolated.json();
     return writeBenchJson(o.json, out.dump(2) + "\n");
 }
 

@@ -3,6 +3,7 @@
 // random camera poses on a generated (or given) heightmap.
 #pragma once
 
+#include "app/bench_scene.h"
 #include "app/gl_context.h"
 #include "config/settings.h"
 
@@ -22,6 +23,7 @@ struct BenchTerrainOptions {
 };
 
 // Returns the exit code.
-int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& options);
+// scene: the isolated scene (app/bench_scene.h), stated in the output and the JSON.
+int runBenchTerrain(const BenchScene& scene, const BenchTerrainOptions& options);
 
 }  // namespace vista

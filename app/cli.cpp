@@ -5,6 +5,7 @@
 #include "config/presets.h"
 
 #include "app/bench_grass.h"
+#include "app/bench_scene.h"
 #include "app/bench_lights.h"
 #include "app/bench_shadows.h"
 #include "app/bench_sky.h"
@@ -17,6 +18,7 @@
 #include "terrain/gen_heightmap.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <map>
@@ -177,11 +179,24 @@ int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std:
     job.backend = opts.backendValue();
     job.write_images = false;
     job.warmup_frames = warmup;
+    // What bench frame measures is the scene as given: it states the scene instead of isolating.
+    BenchScene stated{"frame", enabledSections(job.settings), {}, {}, scene.overrides, job.settings};
+    std::printf("bench frame: scene %s, as given: features on [", scene.config.empty() ? "config/default.ini" : scene.config.c_str());
+    for (std::size_t i = 0; i < stated.kept.size(); ++i) std::printf("%s%s", i ? ", " : "", stated.kept[i].c_str());
+    std::printf("]; --set [");
+    for (std::size_t i = 0; i < stated.user.size(); ++i) std::printf("%s%s", i ? ", " : "", stated.user[i].c_str());
+    std::printf("]\n");
     CaptureResult r = runCapture(job);
     if (r.exit_code != 0) return r.exit_code;
-    std::printf("%s", r.stats.table().c_str());
+    const RunStats& st = r.stats;
+    std::printf("%s", st.table().c_str());
+    std::printf("frame total (median of %zu frames): %.3f ms GPU = %.1f copies, %.3f ms CPU\n", st.frames().size(),
+                st.gpuMedian(), st.reference_copy_ms > 0.0 ? st.gpuMedian() / st.reference_copy_ms : 0.0, st.cpuMedian());
     if (!json.empty()) {
-        std::string problem = writeFileAtomic(json, r.stats.json());
+        nlohmann::json doc = nlohmann::json::parse(st.json());
+        doc["scene"] = stated.json();
+        doc["scene"]["file"] = scene.config.empty() ? "config/default.ini" : scene.config;
+        std::string problem = writeFileAtomic(json, doc.dump(2) + "\n");
         if (!problem.empty()) {
             std::fprintf(stderr, "vista: %s\n", problem.c_str());
             return 1;
@@ -252,6 +267,12 @@ int runCli(int argc, char** argv) {
     bench_sky->add_option("--size", sky_size, "frame size for the timings, WxH (default 320x180)");
     bench_sky->add_option("--backend", sky_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_sky->add_option("--json", sky_json, "also write the results as JSON");
+    bench_sky->add_option("--presets", sky_opts.presets, "LUT presets to measure: low,medium,default,high (default: all)")
+        ->delimiter(',')->check(CLI::IsMember(benchSkyPresetNames()));
+    bool sky_no_clouds = false;
+    std::string sky_psnr_size;
+    bench_sky->add_option("--psnr-size", sky_psnr_size, "size of the views compared with the CPU reference, WxH (default 128x72)");
+    bench_sky->add_flag("--no-clouds", sky_no_clouds, "skip the cloud octave/step sweep");
 
     SceneOptions shadows_scene;
     BenchShadowsOptions shadows_opts;
@@ -312,7 +333,8 @@ int runCli(int argc, char** argv) {
         terrain_opts.heightmap = terrain_heightmap;
         terrain_opts.json = terrain_json;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
-        return runBenchTerrain(s, terrain_opts);
+        return runBenchTerrain(isolateBenchScene("terrain", s, benchKeptSections("terrain"), benchFixedKeys("terrain"), terrain_scene.overrides),
+                              terrain_opts);
     }
     if (*bench_lights) {
         Settings s;
@@ -336,7 +358,8 @@ int runCli(int argc, char** argv) {
         }
         lights_opts.json = lights_json;
         lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
-        return runBenchLights(s, lights_opts);
+        return runBenchLights(isolateBenchScene("lights", s, benchKeptSections("lights"), benchFixedKeys("lights"), lights_scene.overrides),
+                              lights_opts);
     }
     if (*bench_shadows) {
         Settings s;
@@ -345,7 +368,8 @@ int runCli(int argc, char** argv) {
         shadows_opts.json = shadows_json;
         shadows_opts.reference = !shadows_no_reference;
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
-        return runBenchShadows(s, shadows_opts);
+        return runBenchShadows(isolateBenchScene("shadows", s, benchKeptSections("shadows"), benchFixedKeys("shadows"), shadows_scene.overrides),
+                              shadows_opts);
     }
     if (*bench_grass) {
         Settings s;
@@ -354,15 +378,19 @@ int runCli(int argc, char** argv) {
         if (!grass_densities.empty()) grass_opts.densities = grass_densities;
         grass_opts.json = grass_json;
         grass_opts.backend = grass_backend == "egl" ? Backend::Egl : Backend::OSMesa;
-        return runBenchGrass(s, grass_opts);
+        return runBenchGrass(isolateBenchScene("grass", s, benchKeptSections("grass"), benchFixedKeys("grass"), grass_scene.overrides),
+                              grass_opts);
     }
     if (*bench_sky) {
         Settings s;
         if (!sky_scene.load(s)) return 2;
         if (!sky_size.empty() && !parseSize(sky_size, sky_opts.width, sky_opts.height)) return 2;
         sky_opts.json = sky_json;
+        sky_opts.clouds = !sky_no_clouds;
+        if (!sky_psnr_size.empty() && !parseSize(sky_psnr_size, sky_opts.psnr_width, sky_opts.psnr_height)) return 2;
         sky_opts.backend = sky_backend == "egl" ? Backend::Egl : Backend::OSMesa;
-        return runBenchSky(s, sky_opts);
+        return runBenchSky(isolateBenchScene("sky", s, benchKeptSections("sky"), benchFixedKeys("sky"), sky_scene.overrides),
+                              sky_opts);
     }
 
     const SceneOptions& scene = *run_cmd ? run_scene : SceneOptions{};
