@@ -58,9 +58,9 @@ double maxErrorPx(FrameRenderer& renderer, Settings s, const ViewParams& view) {
 int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
     const Settings& scene = isolated.settings;
     std::printf("%s", isolated.summary().c_str());
-    constexpr int kWidth = 640, kHeight = 360;
+    const int width = o.width, height = o.height;
     std::string error;
-    auto context = createContext(o.backend, ContextOptions{kWidth, kHeight, false, false, false, false, "bench"}, error);
+    auto context = createContext(o.backend, ContextOptions{width, height, false, false, false, false, "bench"}, error);
     if (!context) return fail(1, error);
     FrameRenderer renderer(vistaRoot());
     if (!renderer.compilePrograms(error)) return fail(1, "shader compilation failed:\n" + error);
@@ -98,7 +98,7 @@ int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
     renderer.adoptTerrain(std::move(made));
 
     RunStats stats;
-    stats.reference_copy_ms = renderer.measureReferenceCopy(kWidth, kHeight);
+    stats.reference_copy_ms = renderer.measureReferenceCopy(width, height);
     // The same poses with distance-only CDLOD whose ranges are raised to meet the same error
     // bound: what the per-node error metric saves.
     Settings distance = s;
@@ -108,7 +108,7 @@ int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
     std::vector<unsigned char> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;
-    for (const ViewParams& view : randomPoses(terrain, s.terrain, o.poses, o.seed, kWidth, kHeight)) {
+    for (const ViewParams& view : randomPoses(terrain, s.terrain, o.poses, o.seed, width, height)) {
         glm::dmat4 view_proj(viewMatrices(view).view_proj);
         const double error_scale = screenErrorScale(view.fov_deg, view.height);
         std::vector<double> samples;
@@ -153,7 +153,7 @@ int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
         {"terrain_gpu_ms_median", gpu},
         {"reference_copy_ms", stats.reference_copy_ms},
         {"terrain_copies", stats.reference_copy_ms > 0 ? gpu / stats.reference_copy_ms : 0.0},
-        {"viewport", {kWidth, kHeight}},
+        {"viewport", {width, height}},
         {"renderer", context->renderer()},
         {"backend", backendName(o.backend)},
         {"heightmap_seconds", prepare_s},

@@ -17,6 +17,7 @@ struct BenchTerrainOptions {
     std::filesystem::path heightmap;  // empty: generate an island of `size`
     int size = 4097;                  // samples per side of the generated island
     int poses = 16;
+    int width = 640, height = 360;    // frame size of the poses (the error is in its pixels)
     std::uint32_t seed = 1;           // island and poses
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;       // empty: table only

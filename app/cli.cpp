@@ -243,6 +243,8 @@ int runCli(int argc, char** argv) {
     bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed");
     bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
+    std::string terrain_frame_size;
+    bench_terrain->add_option("--frame-size", terrain_frame_size, "frame size WxH of the poses (default 640x360)");
 
     SceneOptions lights_scene;
     BenchLightsOptions lights_opts;
@@ -332,6 +334,7 @@ int runCli(int argc, char** argv) {
         if (!terrain_scene.load(s)) return 2;
         terrain_opts.heightmap = terrain_heightmap;
         terrain_opts.json = terrain_json;
+        if (!terrain_frame_size.empty() && !parseSize(terrain_frame_size, terrain_opts.width, terrain_opts.height)) return 2;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchTerrain(isolateBenchScene("terrain", s, benchKeptSections("terrain"), benchFixedKeys("terrain"), terrain_scene.overrides),
                               terrain_opts);
