@@ -1,7 +1,9 @@
-// `vista bench lights`: the local-light culling methods compared on one fixed view of a
-// generated scene (an island with a field of ground-level lights in front of the camera), for
-// several light counts: GPU cost of culling + shading (also in reference copies), shading
-// evaluations against the pairs that really need shading, CPU build cost and GPU memory.
+// `vista bench lights`: the local-light culling methods compared on a generated scene (an island
+// with a field of ground-level lights in front of the camera): GPU cost of culling + shading
+// (also in reference copies), shading evaluations against the pairs that really need shading,
+// CPU build cost and GPU memory. Sweeps reproduce the KU Leuven (002) experiment: light counts,
+// resolution, tile size, hash node size, deferred against forward lists, a camera path (median
+// and p95 per frame) and evaluations per pixel class (distance band) -- docs/lights-experiment.md.
 #pragma once
 
 #include "app/bench_scene.h"
@@ -9,6 +11,8 @@
 #include "config/settings.h"
 
 #include <filesystem>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace vista {
@@ -22,7 +26,17 @@ struct BenchLightsOptions {
     float radius_m = 40.0f;           // every light's radius
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;       // empty: table only
+    // Sweeps: counts (the methods over `lights`), resolution, tiles, nodes, forward, path, classes.
+    std::vector<std::string> sweeps = {"counts"};
+    bool methods_given = false;       // else the other sweeps leave naive out (its cost grows as lights x pixels)
+    std::vector<std::pair<int, int>> resolutions = {{320, 180}, {640, 360}};  // the resolution sweep
+    int sweep_lights = 1024;          // light count of every sweep but counts
+    int path_frames = 16;             // frames of the path sweep
+    std::filesystem::path charts;     // PNG charts go here (one per sweep); empty: beside --json, or none
 };
+
+// The sweep names bench lights accepts, in the order it runs them.
+std::vector<std::string> benchLightsSweeps();
 
 // Returns the exit code.
 // scene: the isolated scene (app/bench_scene.h), stated in the output and the JSON.

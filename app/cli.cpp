@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -260,6 +261,15 @@ int runCli(int argc, char** argv) {
     bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(CLI::Range(0.0f, 1.0e4f));
     bench_lights->add_option("--backend", lights_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_lights->add_option("--json", lights_json, "also write the results as JSON");
+    std::string lights_sweeps, lights_resolutions;
+    bench_lights->add_option("--sweep", lights_sweeps,
+                             "comma-separated sweeps: counts (default), resolution, tiles, nodes, forward, path, classes, or all");
+    bench_lights->add_option("--resolutions", lights_resolutions, "frame sizes of the resolution sweep, e.g. 320x180,640x360 (the default)");
+    bench_lights->add_option("--sweep-lights", lights_opts.sweep_lights, "light count of every sweep but counts (default 1024)")
+        ->check(CLI::Range(1, 1000000));
+    bench_lights->add_option("--path-frames", lights_opts.path_frames, "frames of the path sweep (default 16)")->check(CLI::Range(1, 10000));
+    std::string lights_charts;
+    bench_lights->add_option("--charts", lights_charts, "directory for the PNG charts (default: beside --json)");
 
     SceneOptions sky_scene;
     BenchSkyOptions sky_opts;
@@ -360,6 +370,30 @@ int runCli(int argc, char** argv) {
             }
         }
         lights_opts.json = lights_json;
+        lights_opts.charts = lights_charts;
+        lights_opts.methods_given = !lights_methods.empty();
+        if (!lights_sweeps.empty()) {
+            lights_opts.sweeps.clear();
+            const std::vector<std::string> known = benchLightsSweeps();
+            std::stringstream list(lights_sweeps);
+            for (std::string name; std::getline(list, name, ',');) {
+                if (name != "all" && std::find(known.begin(), known.end(), name) == known.end()) {
+                    std::fprintf(stderr, "vista: --sweep: '%s' is not a sweep; accepted counts, resolution, tiles, nodes, "
+                                         "forward, path, classes, all\n", name.c_str());
+                    return 2;
+                }
+                lights_opts.sweeps.push_back(name);
+            }
+        }
+        if (!lights_resolutions.empty()) {
+            lights_opts.resolutions.clear();
+            std::stringstream list(lights_resolutions);
+            for (std::string size; std::getline(list, size, ',');) {
+                int w = 0, h = 0;
+                if (!parseSize(size, w, h)) return 2;
+                lights_opts.resolutions.push_back({w, h});
+            }
+        }
         lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchLights(isolateBenchScene("lights", s, benchKeptSections("lights"), benchFixedKeys("lights"), lights_scene.overrides),
                               lights_opts);

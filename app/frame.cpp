@@ -130,10 +130,10 @@ namespace {
 
 // Reads a texture back top row first (GL's rows start at the bottom).
 template <class T>
-void readTexture(GLuint texture, int width, int height, GLenum type, std::vector<T>& out) {
-    std::size_t row = std::size_t(width) * 4;
+void readTexture(GLuint texture, int width, int height, GLenum type, std::vector<T>& out, GLenum format = GL_RGBA) {
+    std::size_t row = std::size_t(width) * (format == GL_RGBA ? 4 : 1);
     out.resize(row * std::size_t(height));
-    glGetTextureImage(texture, 0, GL_RGBA, type, GLsizei(out.size() * sizeof(T)), out.data());
+    glGetTextureImage(texture, 0, format, type, GLsizei(out.size() * sizeof(T)), out.data());
     for (int y = 0; y < height / 2; ++y)
         std::swap_ranges(out.begin() + std::ptrdiff_t(row * std::size_t(y)),
                          out.begin() + std::ptrdiff_t(row * std::size_t(y + 1)),
@@ -176,15 +176,16 @@ struct SinkData {
 
 // "capture.readback" (or "capture.readback_hdr"): copies source into a CPU buffer (a root).
 template <typename T>
-void addReadbackPass(FrameGraph& graph, const char* name, TextureHandle source, GLenum type, std::vector<T>& out) {
+void addReadbackPass(FrameGraph& graph, const char* name, TextureHandle source, GLenum type, std::vector<T>& out,
+                     GLenum format = GL_RGBA) {
     graph.addPass<SinkData>(name,
         [&](PassBuilder& b, SinkData& d) {
             d.source = b.read(source);
             b.sideEffect();
         },
-        [type, &out](const SinkData& d, PassContext& ctx) {
+        [type, format, &out](const SinkData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.source);
-            readTexture(ctx.texture(d.source), desc.width, desc.height, type, out);
+            readTexture(ctx.texture(d.source), desc.width, desc.height, type, out, format);
         });
 }
 
@@ -336,7 +337,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         if (local_lights) {
             LightPassOptions options;
             options.count = request.count_lights;
-            options.heat = s.debug.view == DebugView::Lights;
+            options.heat = s.debug.view == DebugView::Lights || request.light_heat;
             options.forward = request.forward_lights || s.water.enabled;  // water.surface shades them forward
             options.spot_shadows = &spot_input;
             local_lights_->addPasses(graph, rc, scene, counters_, options);
@@ -387,6 +388,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         weather_.reset();
     }
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
+    if (request.light_heat && scene.light_heat.valid())
+        addReadbackPass(graph, "lights.heat_readback", scene.light_heat, GL_FLOAT, *request.light_heat);
+    if (request.depth && scene.depth.valid())
+        addReadbackPass(graph, "capture.depth_readback", scene.depth, GL_FLOAT, *request.depth, GL_DEPTH_COMPONENT);
 
     const bool shown = request.capture_ldr || request.present;  // else the graph culls the chain
     TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth, shown);

@@ -50,6 +50,10 @@ struct FrameRequest {
     bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)
     bool count_weather = false;                    // weather.drops, weather.splashes (drawn, GPU counters)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
+    std::vector<float>* light_heat = nullptr;      // local lights evaluated per pixel, RGBA floats (R used), top row
+                                                   // first ("lights.heat_readback"); untouched without local lights
+    std::vector<float>* depth = nullptr;           // reversed-Z depth (0: sky), one float a pixel, top row first
+                                                   // ("capture.depth_readback"; bench lights classes pixels by it)
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
 };

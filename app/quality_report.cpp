@@ -2,6 +2,8 @@
 // render_line, render_box, render_text with a DejaVu font when one is installed).
 #include "app/quality_report.h"
 
+#include "app/chart.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -176,12 +178,6 @@ struct Axes {
 constexpr std::array<std::array<float, 3>, 5> kPresetColors{{
     {0.15f, 0.35f, 0.85f}, {0.1f, 0.6f, 0.2f}, {0.95f, 0.55f, 0.0f}, {0.85f, 0.1f, 0.1f}, {0.55f, 0.2f, 0.7f}}};
 
-std::string fontFile() {
-    for (const char* f : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf",
-                          "/usr/share/fonts/dejavu/DejaVuSans.ttf"})
-        if (std::filesystem::exists(f)) return f;
-    return {};
-}
 
 }  // namespace
 
@@ -209,7 +205,7 @@ std::string writeQualityChart(const std::filesystem::path& file, const QualityRe
     if (ax.lx1 - ax.lx0 < 0.5) ax.lx1 = ax.lx0 + 0.5;
     if (ax.db1 - ax.db0 < 5.0) ax.db1 = ax.db0 + 5.0;
 
-    const std::string font = fontFile();
+    const std::string font = chartFontFile();
     labels = true;
     auto text = [&](int x, int y, const std::string& s, int size, const float* color, OIIO::ImageBufAlgo::TextAlignX ax_ =
                                                                                        OIIO::ImageBufAlgo::TextAlignX::Left) {

@@ -117,7 +117,7 @@ void describeVolume(SettingsVisitor& v, LightVolume& g) {
 
 void describe(SettingsVisitor& v, LightsSettings& s) {
     static constexpr std::array<const char*, 4> methods{"naive", "tiled", "clustered", "hashed"};
-    static constexpr std::array<const char*, 2> tiles{"16", "32"};
+    static constexpr std::array<const char*, 4> tiles{"16", "32", "8", "64"};  // the enum's order
     static constexpr std::array<const char*, 3> motions{"none", "circle", "bob"};
     v.section("lights", "local point and spot lights and their culling");
     v.field({"enabled", "", "local lights (off: no culling pass and no light buffers)"}, s.enabled);

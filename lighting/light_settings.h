@@ -45,8 +45,17 @@ namespace vista {
 inline constexpr std::uint64_t kMaxVolumeLights = 1000000;  // lights one volume may make
 
 enum class LightCulling : int { Naive, Tiled, Clustered, Hashed };
-enum class LightTileSize : int { Px16, Px32 };
-inline int tilePixels(LightTileSize s) { return s == LightTileSize::Px16 ? 16 : 32; }
+// 8 and 64 came after 16 and 32 (002's sweep); appended so saved scenes keep their values.
+enum class LightTileSize : int { Px16, Px32, Px8, Px64 };
+inline int tilePixels(LightTileSize s) {
+    switch (s) {
+        case LightTileSize::Px16: return 16;
+        case LightTileSize::Px32: return 32;
+        case LightTileSize::Px8: return 8;
+        case LightTileSize::Px64: return 64;
+    }
+    return 16;
+}
 
 struct NamedLight {
     std::string name;
@@ -62,7 +71,7 @@ struct NamedLightVolume {
 struct LightsSettings {
     bool enabled = true;                               //!< local lights (point, spot); off: no culling pass, no buffers
     LightCulling culling = LightCulling::Clustered;    //!< naive | tiled | clustered | hashed
-    LightTileSize tile_size = LightTileSize::Px16;     //!< px, screen tile of tiled and clustered: 16 | 32
+    LightTileSize tile_size = LightTileSize::Px16;     //!< px, screen tile of tiled and clustered: 16 | 32 | 8 | 64
     int cluster_slices = 0;         //!< depth slices, 0..256; 0 = 002's cubic clusters (ratio 1 + 2 tan(fov/2) / tiles_y), at most kMaxAutoSlices
     float cluster_near_m = 0.0f;    //!< m, near_0 of near_k = near_0 * ratio^k, 0..1e4; 0 = the camera's near plane
     float cluster_far_m = 4000.0f;  //!< m, depth the bounded slices reach; the last slice also takes all beyond, 1..1e7
