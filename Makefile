@@ -2,6 +2,7 @@
 #   make demo   build and run the default scene (a window, or a headless capture to out/ without a display)
 #   make test   build and run every test through ctest
 #   make bench  build and print the per-pass frame benchmark
+#   make bench-gpu  every bench under --backend egl at 1920x1080, one report in out/bench-gpu/ (BENCH_GPU_ARGS adds options)
 #   make golden build and rewrite the golden images (tests/golden/*.png) from this build
 #   make fuzz   build the libFuzzer targets with clang in build-fuzz/ and run each for FUZZ_SECONDS
 #   make test-sanitize  build with AddressSanitizer + UBSan in build-sanitize/ and run every test
@@ -20,7 +21,7 @@ SANITIZE_DIR ?= build-sanitize
 export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS ?= print_stacktrace=1:halt_on_error=1
 
-.PHONY: all deps fuzz-deps configure build demo test bench golden fuzz test-sanitize clean
+.PHONY: all deps fuzz-deps configure build demo test bench bench-gpu golden fuzz test-sanitize clean
 
 all: build
 
@@ -53,6 +54,10 @@ test: build
 
 bench: build
 	./$(BUILD_DIR)/vista bench frame
+
+# Sized for under 5 minutes on a GPU; tools/bench_gpu.py --help lists the options.
+bench-gpu: build
+	python3 tools/bench_gpu.py --vista $(BUILD_DIR)/vista --out out/bench-gpu $(BENCH_GPU_ARGS)
 
 golden: build
 	VISTA_UPDATE_GOLDEN=1 ./$(BUILD_DIR)/tests/vista_gl_tests -tc="gl: golden images*"
