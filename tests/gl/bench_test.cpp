@@ -129,3 +129,40 @@ TEST_CASE("gl: bench frame records the measured frames only and prints the total
     }
     CHECK(r.json["scene"]["file"] == "config/default.ini");
 }
+
+TEST_CASE("gl: bench lights sweeps, tiles 8 to 64 and hash nodes trade evaluations as 002 says, with charts") {
+    vista::test::TempDir dir("bench-lights-sweeps");
+    Run r = bench("lights --size 64x36 --frames 1 --sweep tiles,nodes,classes --sweep-lights 64 --methods tiled,clustered,hashed",
+                  dir);
+    REQUIRE_MESSAGE(r.code == 0, r.output);
+    CAPTURE(r.output);
+    std::map<std::string, std::vector<nlohmann::json>> tiles;
+    std::vector<nlohmann::json> nodes;
+    for (const auto& row : r.json["rows"]) {
+        if (row["sweep"] == "tiles") tiles[row["method"]].push_back(row);
+        if (row["sweep"] == "nodes") nodes.push_back(row);
+    }
+    for (const char* method : {"tiled", "clustered"}) {
+        CAPTURE(method);
+        REQUIRE(tiles[method].size() == 4);
+        for (std::size_t i = 0; i < 4; ++i) {
+            CHECK(tiles[method][i]["tile_px"] == (8 << i));
+            CHECK(tiles[method][i]["exact"] == tiles[method][0]["exact"]);  // every tile size finds every pair
+            if (i > 0) CHECK(tiles[method][i]["evaluations"].get<double>() >= tiles[method][i - 1]["evaluations"].get<double>());
+        }
+    }
+    REQUIRE(nodes.size() == 4);  // 0.25 r .. 2 r: smaller nodes, fewer evaluations, more memory
+    for (std::size_t i = 1; i < 4; ++i) {
+        CHECK(nodes[i]["evaluations"].get<double>() >= nodes[i - 1]["evaluations"].get<double>());
+        CHECK(nodes[i]["hash"]["gpu_bytes"].get<double>() <= nodes[i - 1]["hash"]["gpu_bytes"].get<double>());
+    }
+    REQUIRE(r.json["sweeps"]["classes"].size() == 3);
+    for (const auto& c : r.json["sweeps"]["classes"]) {
+        double pixels = 0.0;
+        for (const char* band : {"<50m", "50-150m", "150-400m", "400-1000m", ">1000m", "sky"}) pixels += c[band]["pixels"].get<double>();
+        CHECK(pixels == 64.0 * 36.0);
+        CHECK(c["sky"]["evaluations"] == 0.0);
+    }
+    for (const char* chart : {"lights_tiles.png", "lights_nodes.png", "lights_classes.png"})
+        CHECK(std::filesystem::exists(dir.path / chart));
+}
