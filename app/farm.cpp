@@ -90,7 +90,7 @@ int runFarmMerge(const MergeOptions& o) {
 
 std::string slurmScript(const SlurmOptions& o, const std::filesystem::path& scripts_dir) {
     const std::string vista = o.vista.empty() ? selfExecutable().string() : o.vista;
-    std::string common = "--chdir=" + quote(std::filesystem::absolute(".").string());
+    std::string common = "--chdir=" + quote(std::filesystem::current_path().string());
     if (!o.partition.empty()) common += " --partition=" + quote(o.partition);
     if (!o.time_limit.empty()) common += " --time=" + quote(o.time_limit);
     std::string array = "sbatch --parsable " + common + " --job-name=vista-capture --array=0-" + std::to_string(o.tasks - 1);
