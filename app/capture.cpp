@@ -1,5 +1,6 @@
-// Capture: validate everything first (path, output directory, existing files), then
-// render frame by frame at a fixed time step.
+// Capture: validate everything first (path, frame selection, output directory, existing files,
+// a manifest to resume), then render the selected frames at a fixed time step, each run of
+// consecutive frames after its settle frames, keeping the manifest current after every frame.
 #include "app/capture.h"
 
 #include "app/camera_path.h"
@@ -7,7 +8,9 @@
 #include "app/image_writer.h"
 #include "app/progress.h"
 #include "app/scene.h"
+#include "app/video.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -33,37 +36,120 @@ std::string checkWritableDir(const std::filesystem::path& dir) {
     return {};
 }
 
+double captureFrameTime(double start_s, int frame, double fps) {
+    return start_s + std::max(frame, 0) / fps;
+}
+
+namespace {
+
+// Why an existing manifest cannot be resumed by this run ("" when it can).
+std::string resumeMismatch(const Manifest& old, const Manifest& now) {
+    auto field = [](const std::string& what, const std::string& was, const std::string& is) {
+        return what + " " + was + " (this run: " + is + ")";
+    };
+    if (old.version != now.version) return field("vista version", old.version, now.version);
+    if (old.scene_hash != now.scene_hash) return field("scene hash", old.scene_hash, now.scene_hash);
+    if (old.path_hash != now.path_hash) return field("camera path hash", old.path_hash, now.path_hash);
+    if (old.total_frames != now.total_frames)
+        return field("frame count", std::to_string(old.total_frames), std::to_string(now.total_frames));
+    if (old.fps != now.fps) return field("fps", std::to_string(old.fps), std::to_string(now.fps));
+    if (old.width != now.width || old.height != now.height)
+        return field("size", std::to_string(old.width) + "x" + std::to_string(old.height),
+                     std::to_string(now.width) + "x" + std::to_string(now.height));
+    if (old.format != now.format) return field("format", old.format, now.format);
+    return {};
+}
+
+}  // namespace
+
 CaptureResult runCapture(const CaptureJob& job) {
+    const auto run_start = std::chrono::steady_clock::now();
     CaptureResult result;
+    // Says why (stderr) and returns what was done so far with the exit code.
+    auto stop = [&](int code, const std::string& message) {
+        result.exit_code = fail(code, message);
+        return std::move(result);
+    };
     const Settings& s = job.settings;
     const CaptureSettings& c = s.capture;
 
     InputErrors errors;
-    CameraPath path = CameraPath::load(resolveInput(c.path), errors, s.camera.fov_deg);
+    const std::filesystem::path path_file = resolveInput(c.path);
+    CameraPath path = CameraPath::load(path_file, errors, s.camera.fov_deg);
     if (!errors.empty()) {
         printErrors(errors);
         result.exit_code = 2;
         return result;
     }
+    FrameSpan span;
+    if (std::string problem = selectFrames(job.selection, c.frames, span); !problem.empty()) return stop(2, problem);
     std::filesystem::path out = c.out;
     if (job.write_images || !job.stats_file.empty()) {
         std::string problem = checkWritableDir(job.write_images ? out : job.stats_file.parent_path().empty()
                                                                             ? std::filesystem::path(".")
                                                                             : job.stats_file.parent_path());
-        if (!problem.empty()) return {fail(2, problem), {}, {}};
+        if (!problem.empty()) return stop(2, problem);
     }
-    if (job.write_images && !job.force)
-        for (int i = 0; i < c.frames; ++i)
-            if (std::filesystem::exists(captureFileName(out, i, c.format)))
-                return {fail(2, captureFileName(out, i, c.format).string() +
-                                    " already exists; pass --force to overwrite, or choose another --out"), {}, {}};
+    const bool exr = c.format == ImageFormat::Exr;
+    const ImageFormat file_format = exr ? ImageFormat::Exr : ImageFormat::Png;  // mp4: PNG frames first
+
+    // The manifest: what this run is, and (resuming) what an earlier run of it left.
+    Manifest manifest;
+    manifest.version = vistaVersion();
+    manifest.scene_hash = sceneHash(s);
+    manifest.path_hash = pathHash(path_file);
+    manifest.path_file = c.path;
+    manifest.settings = sceneText(s);
+    manifest.total_frames = c.frames;
+    manifest.fps = c.fps;
+    manifest.width = c.width;
+    manifest.height = c.height;
+    manifest.format = exr ? "exr" : "png";
+    manifest.shard = job.selection.shard;
+    manifest.shards = job.selection.shards;
+    manifest.span = span;
+    manifest.settle_frames = job.write_images ? c.settle_frames : job.warmup_frames;
+    const std::filesystem::path manifest_file = out / manifestName(job.selection);
+    const bool whole_video = c.format == ImageFormat::Mp4 && span == FrameSpan{0, c.frames};
+    const std::filesystem::path video_file = out / "capture.mp4";
+
+    std::vector<int> todo;
+    if (job.write_images && job.resume && std::filesystem::exists(manifest_file)) {
+        Manifest old;
+        if (std::string problem = Manifest::load(manifest_file, old); !problem.empty())
+            return stop(2, problem + "; remove it to start the run over");
+        if (std::string differs = resumeMismatch(old, manifest); !differs.empty())
+            return stop(2, manifest_file.string() + ": cannot resume a run of another capture: its " + differs +
+                                "; choose another --out or remove the manifest");
+        manifest.settle_ms = old.settle_ms;
+        manifest.wall_s = old.wall_s;
+        for (int k = span.first; k < span.end; ++k)
+            if (const ManifestFrame* done = old.find(k); done && fileChecksum(out / done->file) == done->checksum) {
+                manifest.frames.push_back(*done);
+                ++result.kept;
+            }
+    }
+    for (int k = span.first; k < span.end; ++k)
+        if (!manifest.find(k)) todo.push_back(k);
+    if (job.write_images && !job.force && !job.resume) {
+        for (int k = span.first; k < span.end; ++k)
+            if (std::filesystem::exists(captureFileName(out, k, file_format)))
+                return stop(2, captureFileName(out, k, file_format).string() +
+                                    " already exists; pass --force to overwrite, --resume to keep the frames its manifest "
+                                    "vouches for, or choose another --out");
+        if (std::filesystem::exists(manifest_file))
+            return stop(2, manifest_file.string() + " already exists; pass --resume to continue that run, --force to "
+                                                     "start over, or choose another --out");
+        if (whole_video && std::filesystem::exists(video_file))
+            return stop(2, video_file.string() + " already exists; pass --force to replace it, or choose another --out");
+    }
 
     std::string error;
     ContextOptions options{c.width, c.height, /*visible=*/false, false, false, s.window.gl_debug, "vista capture"};
     auto context = createContext(job.backend, options, error);
-    if (!context) return {fail(1, error), {}, {}};
+    if (!context) return stop(1, error);
     FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return {fail(1, "shader compilation failed:\n" + error), {}, {}};
+    if (!renderer.compilePrograms(error)) return stop(1, "shader compilation failed:\n" + error);
     errors = renderer.prepare(s);
     if (!errors.empty()) {
         printErrors(errors);
@@ -83,7 +169,6 @@ CaptureResult runCapture(const CaptureJob& job) {
     std::vector<unsigned char> ldr;
     std::vector<std::uint16_t> hdr;
     FrameRequest request;
-    bool exr = c.format == ImageFormat::Exr;
     if (exr)
         request.capture_hdr = &hdr;
     else
@@ -93,47 +178,89 @@ CaptureResult runCapture(const CaptureJob& job) {
     request.count_grass = want_stats;
     request.count_weather = want_stats;
 
-    Progress progress(c.frames, job.write_images ? "capture" : "bench");
-    int total = job.warmup_frames + c.frames;
-    for (int i = 0; i < total; ++i) {
-        int frame = i - job.warmup_frames;  // negative while warming up
-        double t = path.startTime() + std::max(frame, 0) / double(c.fps);
+    std::string dot;  // the last frame's graph, with --dot
+    // Settle frames render exactly as written frames do (same request, read back and all), so
+    // the temporal state they leave is the state a sequential run has at that frame.
+    auto renderFrame = [&](int frame, bool last) {
+        const double t = captureFrameTime(path.startTime(), frame, double(c.fps));
         CameraPose pose = path.sample(t);
         ViewParams view{pose.position, pose.yaw_deg, pose.pitch_deg, pose.fov_deg, s.camera.near_m, c.width, c.height};
+        request.graph_dot = last && !job.dot_file.empty() ? &dot : nullptr;
+        return renderer.render(s, view, t, request);
+    };
+    auto flushStats = [&](bool wait) {
+        stats.addTimings(renderer.timers().collect(wait));
+        for (const auto& v : renderer.counters().collect(wait))
+            if (stats.frames().count(v.frame)) stats.addCounter(v.frame, v.name, double(v.value));  // not settle frames'
+    };
 
-        auto start = std::chrono::steady_clock::now();
-        std::uint64_t index = renderer.frameIndex();
-        std::string dot;
-        request.graph_dot = !job.dot_file.empty() && i + 1 == total ? &dot : nullptr;
-        FrameReport report = renderer.render(s, view, t, request);
-        double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (frame < 0) continue;
+    Progress progress(int(todo.size()), job.write_images ? "capture" : "bench");
+    const std::vector<FrameSpan> runs = consecutiveRuns(todo);
+    const int settle = job.write_images ? c.settle_frames : job.warmup_frames;
+    int done = 0;
+    for (const FrameSpan& run : runs) {
+        // Every run starts from a fresh history, sequential runs too: frame k then depends on
+        // frames k - settle .. k alone, whichever process renders it.
+        renderer.resetHistory();
+        const auto settle_start = std::chrono::steady_clock::now();
+        for (int k = run.first - settle; k < run.first; ++k) renderFrame(k, false);
+        manifest.settle_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - settle_start).count();
+        result.settle_frames += settle;
 
-        stats.executed = report.executed;
-        stats.culled = report.culled;
-        stats.addFrame(index, cpu_ms);
-        for (const auto& [name, value] : report.counters) stats.addCounter(index, name, value);
-        stats.addTimings(renderer.timers().collect());
-        for (const auto& v : renderer.counters().collect()) stats.addCounter(v.frame, v.name, double(v.value));
-        if (job.write_images) {
-            std::filesystem::path file = captureFileName(out, frame, c.format);
-            std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
-            if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
-            result.images.push_back(file);
+        for (int frame = run.first; frame < run.end; ++frame) {
+            const auto start = std::chrono::steady_clock::now();
+            const std::uint64_t index = renderer.frameIndex();
+            FrameReport report = renderFrame(frame, &run == &runs.back() && frame + 1 == run.end);
+            const double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+            stats.executed = report.executed;
+            stats.culled = report.culled;
+            stats.addFrame(index, cpu_ms);
+            for (const auto& [name, value] : report.counters) stats.addCounter(index, name, value);
+            flushStats(false);
+            if (job.write_images) {
+                std::filesystem::path file = captureFileName(out, frame, file_format);
+                std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
+                std::optional<std::string> sum = problem.empty() ? fileChecksum(file) : std::nullopt;
+                if (problem.empty() && !sum) problem = file.string() + ": cannot read back the image just written";
+                if (!problem.empty()) return stop(1, problem);
+                result.images.push_back(file);
+                const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+                ManifestFrame entry{frame, file.filename().string(), *sum, ms};
+                manifest.frames.insert(std::upper_bound(manifest.frames.begin(), manifest.frames.end(), entry,
+                                                        [](const auto& a, const auto& b) { return a.index < b.index; }),
+                                       entry);
+                // After every frame: a run killed at any point leaves a manifest of what it finished.
+                problem = writeFileAtomic(manifest_file, manifest.json());
+                if (!problem.empty()) return stop(1, problem);
+            }
+            if (request.graph_dot) {
+                std::string problem = writeFileAtomic(job.dot_file, dot);
+                if (!problem.empty()) return stop(1, problem);
+            }
+            if (job.progress) progress.update(++done);
         }
-        if (!dot.empty()) {
-            std::string problem = writeFileAtomic(job.dot_file, dot);
-            if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
-        }
-        if (job.progress) progress.update(frame + 1);
     }
     if (job.progress) progress.finish();
-    stats.addTimings(renderer.timers().collect(/*wait=*/true));
-    for (const auto& v : renderer.counters().collect(true)) stats.addCounter(v.frame, v.name, double(v.value));
+    flushStats(true);
 
+    if (job.write_images) {
+        manifest.complete = true;
+        manifest.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+        if (std::string problem = writeFileAtomic(manifest_file, manifest.json()); !problem.empty())
+            return stop(1, problem);
+        result.manifest = manifest_file;
+        if (whole_video) {
+            std::vector<std::filesystem::path> frames;
+            for (const ManifestFrame& f : manifest.frames) frames.push_back(out / f.file);
+            std::string problem = encodeVideo(frames, video_file, {double(c.fps), c.crf, job.force || job.resume});
+            if (!problem.empty()) return stop(1, problem);
+            result.video = video_file;
+        }
+    }
     if (!job.stats_file.empty()) {
         std::string problem = writeFileAtomic(job.stats_file, stats.json());
-        if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
+        if (!problem.empty()) return stop(1, problem);
     }
     return result;
 }

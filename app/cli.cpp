@@ -12,6 +12,7 @@
 #include "app/bench_terrain.h"
 #include "app/camera_path.h"
 #include "app/capture.h"
+#include "app/farm.h"
 #include "app/quality.h"
 #include "app/run_window.h"
 #include "app/scene.h"
@@ -72,6 +73,8 @@ struct CaptureOptions {
     int frames = 0;
     double fps = 0.0;
     bool force = false;
+    std::string shard, frames_range;  // farm: the part of the path's frames to write
+    bool resume = false;
 
     void add(CLI::App* cmd, bool images) {
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
@@ -82,10 +85,23 @@ struct CaptureOptions {
             ->check(CLI::IsMember({"osmesa", "egl", "glfw"}));
         if (!images) return;
         cmd->add_option("--out", out, "output directory (default: [capture] out)");
-        cmd->add_option("--format", format, "png (8-bit sRGB) or exr (linear half float)")->check(CLI::IsMember({"png", "exr"}));
+        cmd->add_option("--format", format, "png (8-bit sRGB), exr (linear half float) or mp4 (PNG frames and an H.264 video)")
+            ->check(CLI::IsMember({"png", "exr", "mp4"}));
         cmd->add_option("--stats", stats, "write per-pass timings and counters as JSON to this file");
         cmd->add_option("--dot", dot, "write the last frame's pass graph (Graphviz DOT; culled passes dashed)");
         cmd->add_flag("--force", force, "overwrite existing images");
+        cmd->add_option("--shard", shard, "render shard K of N (K from 0) of the selected frames: contiguous blocks");
+        cmd->add_option("--frames-range", frames_range, "render frames A..B-1 of the path's frames only");
+        cmd->add_flag("--resume", resume, "keep the frames whose files match this run's manifest; render the rest");
+    }
+
+    // --shard and --frames-range into a selection; false (with a message) when malformed.
+    bool selection(FrameSelection& sel) const {
+        std::string problem;
+        if (!shard.empty()) problem = parseShard(shard, sel.shard, sel.shards);
+        if (problem.empty() && !frames_range.empty()) problem = parseFrameRange(frames_range, sel.range.emplace());
+        if (!problem.empty()) std::fprintf(stderr, "vista: %s\n", problem.c_str());
+        return problem.empty();
     }
 
     // Applies the flags over [capture]; false (with a message) on a malformed --size.
@@ -94,7 +110,7 @@ struct CaptureOptions {
         if (frames > 0) c.frames = frames;
         if (fps > 0.0) c.fps = float(fps);
         if (!out.empty()) c.out = out;
-        if (!format.empty()) c.format = format == "exr" ? ImageFormat::Exr : ImageFormat::Png;
+        if (!format.empty()) c.format = format == "exr" ? ImageFormat::Exr : format == "mp4" ? ImageFormat::Mp4 : ImageFormat::Png;
         return size.empty() || parseSize(size, c.width, c.height);
     }
 
@@ -106,14 +122,18 @@ struct CaptureOptions {
 
 int capture(const SceneOptions& scene, const CaptureOptions& opts) {
     CaptureJob job;
-    if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
+    if (!scene.load(job.settings) || !opts.apply(job.settings.capture) || !opts.selection(job.selection)) return 2;
     job.stats_file = opts.stats;
     job.dot_file = opts.dot;
     job.backend = opts.backendValue();
     job.force = opts.force;
+    job.resume = opts.resume;
     CaptureResult r = runCapture(job);
     if (r.exit_code == 0) {
-        std::printf("vista: wrote %zu image(s) to %s/\n", r.images.size(), job.settings.capture.out.c_str());
+        std::printf("vista: wrote %zu image(s) to %s/ (%d kept from an earlier run, %d settle frames)\n", r.images.size(),
+                    job.settings.capture.out.c_str(), r.kept, r.settle_frames);
+        if (!r.manifest.empty()) std::printf("vista: wrote the manifest %s\n", r.manifest.c_str());
+        if (!r.video.empty()) std::printf("vista: wrote the video %s\n", r.video.c_str());
         if (!job.stats_file.empty()) std::printf("vista: wrote stats to %s\n", job.stats_file.c_str());
     }
     return r.exit_code;
@@ -315,6 +335,37 @@ int runCli(int argc, char** argv) {
         "quality", "image error against the reference beside GPU time for every preset and quality knob");
     quality_opts.add(quality_cmd, quality_scene);
 
+    // Farm: video from finished frames, merging shards, Slurm job arrays (app/farm.h).
+    EncodeOptions encode_opts;
+    CLI::App* encode_cmd = app.add_subcommand("encode", "encode a directory's frame_NNNN.png sequence into an H.264 video");
+    encode_cmd->add_option("dir", encode_opts.dir, "directory of frame_NNNN.png files")->required();
+    encode_cmd->add_option("--out", encode_opts.out, "video file (default DIR/capture.mp4)");
+    encode_cmd->add_option("--fps", encode_opts.fps, "frames per second (default: the manifest's, else 24)")->check(CLI::Range(0.01, 1000.0));
+    encode_cmd->add_option("--crf", encode_opts.crf, "H.264 quality: 0 lossless, 18 (default) visually lossless, 51 worst")->check(CLI::Range(0, 51));
+    encode_cmd->add_flag("--force", encode_opts.force, "replace an existing video");
+    CLI::App* farm_cmd = app.add_subcommand("farm", "render farms: merge shards, submit Slurm job arrays");
+    farm_cmd->require_subcommand(1);
+    MergeOptions merge_opts;
+    CLI::App* merge_cmd = farm_cmd->add_subcommand("merge", "check the shards' manifests fit together, then encode the video");
+    merge_cmd->add_option("dirs", merge_opts.dirs, "directories the shards wrote (manifest*.json and frames)")->required();
+    merge_cmd->add_option("--out", merge_opts.out, "video file (default FIRST_DIR/capture.mp4)");
+    merge_cmd->add_option("--crf", merge_opts.crf, "H.264 quality: 0 lossless, 18 (default), 51 worst")->check(CLI::Range(0, 51));
+    merge_cmd->add_flag("--force", merge_opts.force, "replace an existing video");
+    merge_cmd->add_flag("--check", merge_opts.check_only, "only check the shards; encode nothing");
+    SlurmOptions slurm_opts;
+    CLI::App* slurm_cmd = farm_cmd->add_subcommand("slurm", "print (or --submit) the sbatch commands of a sharded capture and its merge");
+    slurm_cmd->add_option("--tasks", slurm_opts.tasks, "array tasks (shards)")->check(CLI::Range(1, 100000))->required();
+    slurm_cmd->add_option("--out", slurm_opts.out, "the shards' common output directory (shared file system)")->required();
+    slurm_cmd->add_option("--backend", slurm_opts.backend, "egl (GPU nodes, the default) or osmesa (CPU nodes)")
+        ->check(CLI::IsMember({"egl", "osmesa"}));
+    slurm_cmd->add_option("--vista", slurm_opts.vista, "the vista executable on the nodes (default: this one)");
+    slurm_cmd->add_option("--partition", slurm_opts.partition, "sbatch --partition");
+    slurm_cmd->add_option("--time", slurm_opts.time_limit, "sbatch --time of each task");
+    slurm_cmd->add_option("--gres", slurm_opts.gres, "sbatch --gres of each task, e.g. gpu:1");
+    slurm_cmd->add_option("--crf", slurm_opts.crf, "H.264 quality of the merged video")->check(CLI::Range(0, 51));
+    slurm_cmd->add_flag("--submit", slurm_opts.submit, "run sbatch now instead of printing the commands");
+    slurm_cmd->add_option("capture_args", slurm_opts.capture_args, "after --: options for every vista capture (--path, --size, -c, --set ...)");
+
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
@@ -335,6 +386,9 @@ int runCli(int argc, char** argv) {
     }
 
     if (*capture_cmd) return capture(capture_scene, capture_opts);
+    if (*encode_cmd) return runEncode(encode_opts);
+    if (*merge_cmd) return runFarmMerge(merge_opts);
+    if (*slurm_cmd) return runFarmSlurm(slurm_opts);
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);

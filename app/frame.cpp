@@ -272,6 +272,11 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
     return input;
 }
 
+void FrameRenderer::resetHistory() {
+    postfx_.resetHistory();
+    weather_.reset();  // its previous camera (streak velocity); recreated by the next frame with weather
+}
+
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
     RenderContext rc = context(view, s, time_s);
     FrameGraph graph;

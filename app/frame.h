@@ -92,6 +92,13 @@ public:
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
 
+    // Forgets every temporal state, so the next frame renders as the first frame of a fresh
+    // renderer would: the post chain's history (exposure, autofocus, motion blur, lens flare) and
+    // weather's previous camera. Captures call it before the settle frames of each run of written
+    // frames (app/capture.cpp), which is what makes a frame the same whichever shard renders it;
+    // every new kind of history (TAA, cloud reprojection) must be reset here too.
+    void resetHistory();
+
     ShaderLibrary& shaders() { return shaders_; }
     PassTimers& timers() { return timers_; }
     CounterReadback& counters() { return counters_; }

@@ -35,15 +35,25 @@ void describe(SettingsVisitor& v, CameraSettings& s) {
 }
 
 void describe(SettingsVisitor& v, CaptureSettings& s) {
-    static constexpr std::array<const char*, 2> formats{"png", "exr"};
+    static constexpr std::array<const char*, 3> formats{"png", "exr", "mp4"};
     v.section("capture", "headless rendering of a camera path");
     v.field({"path", "", "camera path file"}, s.path);
     v.field({"frames", "", "frames to render"}, s.frames, 1, 1000000);
     v.field({"fps", "1/s", "frames per second of path time"}, s.fps, 0.01f, 1000.0f);
     v.field({"width", "px", "image width"}, s.width, 1, 16384);
     v.field({"height", "px", "image height"}, s.height, 1, 16384);
-    v.choice({"format", "", "png: 8-bit sRGB after tone mapping; exr: linear half-float HDR"}, s.format, formats);
+    v.choice({"format", "", "png: 8-bit sRGB after tone mapping; exr: linear half-float HDR; mp4: the PNG frames, then "
+                            "an H.264 video of them (out/capture.mp4, through ffmpeg)"},
+             s.format, formats);
     v.field({"out", "", "output directory"}, s.out);
+    v.field({"settle_frames", "frames",
+             "frames rendered but not written before a run's first written frame (at the path times of the frames "
+             "before it), so temporal state (auto exposure, autofocus, motion blur, weather, history) is the same "
+             "whichever shard or resumed run renders a frame; adaptation settles by exp(-rate * settle_frames / fps)"},
+            s.settle_frames, 0, 10000);
+    v.field({"crf", "", "H.264 constant rate factor of mp4 output: 0 lossless, 18 visually lossless, 23 ffmpeg's "
+                        "default, 51 worst"},
+            s.crf, 0, 51);
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {

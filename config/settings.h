@@ -38,7 +38,7 @@ struct CameraSettings {
     bool allow_below_ground = false;      //!< free camera may go below the terrain surface
 };
 
-enum class ImageFormat : int { Png, Exr };
+enum class ImageFormat : int { Png, Exr, Mp4 };  // Mp4: PNG frames, then an H.264 video of them
 
 struct CaptureSettings {
     std::string path = "data/paths/default.path";  //!< camera path, relative to the vista root
@@ -48,6 +48,8 @@ struct CaptureSettings {
     int height = 180;                              //!< px
     ImageFormat format = ImageFormat::Png;
     std::string out = "out";                       //!< output directory
+    int settle_frames = 8;                         //!< unwritten frames before a run's first written frame, 0..10000
+    int crf = 18;                                  //!< H.264 constant rate factor of mp4 output, 0 (lossless)..51
 };
 
 enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow, SpotAtlas };

@@ -12,6 +12,15 @@
 
 namespace vista {
 
+void PostChain::resetHistory() {
+    auto_exposure_.reset();
+    dof_.reset();
+    motion_blur_.reset();
+    lens_flare_.reset();
+    has_time_ = false;
+    last_time_s_ = 0.0;
+}
+
 TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
                                    TextureHandle depth, bool shown) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;

@@ -42,6 +42,9 @@ public:
     // Loads the files the settings name ([postfx.grade] lut, found at lut_file) when they
     // changed; the problems (file:line) are returned and the LUT is then left out.
     InputErrors prepare(const Settings& s, const std::filesystem::path& lut_file);
+    // Forgets every state kept across frames (adapted exposure, autofocus, motion blur's previous
+    // camera, the flare's smoothed visibility, the clock): the next frame starts as the first.
+    void resetHistory();
     // GPU bytes the chain holds across frames (effect states, the grading LUT); 0 when no effect
     // keeps state.
     std::size_t memoryBytes() const;

@@ -31,13 +31,18 @@ std::vector<double> atmosphereKey(const AtmosphereParams& p) {
 
 }  // namespace
 
+double snapSkyLightingAltitude(double altitude_m) {
+    if (altitude_m <= 1000.0) return std::round(altitude_m);
+    const double step = std::log1p(1e-3);
+    return 1000.0 * std::exp(std::round(std::log(altitude_m / 1000.0) / step) * step);
+}
+
 SkyLightingCache::SkyLightingCache() = default;
 SkyLightingCache::~SkyLightingCache() = default;
 
 const SkyLighting& SkyLightingCache::get(const SkySettings& sky, const glm::dvec3& camera_world_m) {
     const AtmosphereParams p = atmosphereParams(sky);
     const glm::dvec3 sun = sunDirection(sky);
-    const double altitude = std::max(camera_world_m.y, 0.0);
     std::vector<double> key = atmosphereKey(p);
     if (!table_ || key != key_) {
         table_ = std::make_unique<MultipleScatteringTable>(p, kSteps, kTableAltitudes, kTableMuS);
@@ -45,9 +50,14 @@ const SkyLighting& SkyLightingCache::get(const SkySettings& sky, const glm::dvec
         valid_ = false;
         ++table_builds_;
     }
-    const bool sun_moved = glm::dot(sun, last_.sun_direction) < std::cos(0.01 * 3.14159265358979 / 180.0);
-    const bool moved = std::abs(altitude - last_altitude_m_) > std::max(1.0, 1e-3 * altitude);
-    if (valid_ && !sun_moved && !moved && last_illuminance_ == sky.sun_illuminance) return last_;
+    // The result is a function of the inputs alone, never of the calls before (a capture shard must
+    // light frame k as a sequential run does): the altitude snaps to a fixed grid, steps of 1 m
+    // up to 1 km and of 0.1% above, and the result is recomputed whenever the snapped altitude, the
+    // sun or its illuminance differ at all. (A threshold against the last evaluation would keep a
+    // slowly climbing camera's old lighting for a history-dependent number of frames.)
+    const double altitude = snapSkyLightingAltitude(std::max(camera_world_m.y, 0.0));
+    if (valid_ && sun == last_.sun_direction && altitude == last_altitude_m_ && last_illuminance_ == sky.sun_illuminance)
+        return last_;
     const glm::dvec3 camera{0.0, altitude, 0.0};
     const double scale = sky.sun_illuminance;
     last_.sun_direction = sun;

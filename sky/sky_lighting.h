@@ -28,9 +28,13 @@ struct SkyLighting {
     glm::dvec3 sky_irradiance_up{0.0};
 };
 
+// The altitude the cache evaluates at: altitude_m snapped to whole metres up to 1 km and to steps
+// of 0.1% above (a fixed grid, so the lighting never depends on earlier frames).
+double snapSkyLightingAltitude(double altitude_m);
+
 // Keeps what is expensive: a multiple-scattering table per atmosphere (~0.4 s to build on 2 cores, once
-// per change of the atmosphere's settings) and the last result (recomputed, ~1 ms, when the
-// sun moves by more than 0.01 deg or the camera's altitude by more than 1 m or 0.1%).
+// per change of the atmosphere's settings) and the last result (recomputed, ~1 ms, when the sun,
+// its illuminance or the snapped camera altitude change).
 class SkyLightingCache {
 public:
     SkyLightingCache();
