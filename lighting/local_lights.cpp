@@ -420,7 +420,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 d.depth = b.read(targets.depth);
                 b.sideEffect();  // writes the light lists lights.shade reads
             },
-            [this, &rc, &counters, method, bindBuffers, forward = options.forward](const Data& d, PassContext& ctx) {
+            [this, &rc, &counters, method, bindBuffers, forward = options.forward, count = options.count](const Data& d,
+                                                                                                      PassContext& ctx) {
                 const std::size_t slot = write_slot_;
                 write_slot_ = (write_slot_ + 1) % overflow_ring_.size();
                 GLuint overflow = overflow_ring_[slot].id();
@@ -447,8 +448,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 // For the stats: a copy of the overflow count per frame; for the warning: the ring.
                 GLuint stat = counters.request(rc.frame, "lights.overflow");
                 glCopyNamedBufferSubData(overflow, stat, 0, 0, 4);
-                // 1 when lights.shade draws this frame, 0 when no tile has a light.
-                glCopyNamedBufferSubData(shade_draw_.id(), counters.request(rc.frame, "lights.shade_draws"), 4, 0, 4);
+                // 1 when lights.shade draws this frame, 0 when no tile has a light (with the light counters).
+                if (count) glCopyNamedBufferSubData(shade_draw_.id(), counters.request(rc.frame, "lights.shade_draws"), 4, 0, 4);
                 glCopyNamedBufferSubData(pool_buf_.buffer.id(), overflow, 0, 4, 4);  // the pool's demand
                 overflow_fence_[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
             });
