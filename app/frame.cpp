@@ -246,6 +246,7 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
     const LocalLightStats& st = local_lights_->stats();
     report.counters["lights.count"] = double(st.count);
     report.counters["lights.visible"] = double(st.visible);
+    report.counters["lights.skipped"] = double(st.skipped);  // below [lights] min_screen_px
     report.counters["lights.build_ms"] = st.build_ms;
     report.counters["lights.memory_bytes"] = double(st.memory_bytes);
     return any;
@@ -320,6 +321,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         report.counters["terrain.triangles"] = double(c.triangles);
         report.counters["terrain.nodes"] = double(c.nodes);
         report.counters["terrain.draws"] = double(c.draws);
+        // Quadrants drawn with each material tier (terrain.glsl MATERIAL_TIER): near, mid, far.
+        report.counters["terrain.tier_near"] = double(c.tier_instances[0]);
+        report.counters["terrain.tier_mid"] = double(c.tier_instances[1]);
+        report.counters["terrain.tier_far"] = double(c.tier_instances[2]);
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);

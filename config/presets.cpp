@@ -51,6 +51,15 @@ const QualityKnob kKnobs[] = {
                     : double(s.terrain.max_error_px);
      },
      [](const Settings& s) { return s.terrain.enabled; }, "full", false, true},
+    // Terrain material tiers (terrain.glsl MATERIAL_TIER): detail normals and triplanar rock
+    // within detail_distance_m, layer means beyond far_material_m; the reference keeps every
+    // texture at every distance (the largest values of both ranges).
+    {"terrain.detail_distance_m", "m", {100, 150, 250, 400, 100000},
+     [](Settings& s, double v, const Settings&) { s.terrain.detail_distance_m = float(v); },
+     [](const Settings& s) { return double(s.terrain.detail_distance_m); }, [](const Settings& s) { return s.terrain.enabled; }},
+    {"terrain.far_material_m", "m", {1500, 2000, 3000, 6000, 1.0e7},
+     [](Settings& s, double v, const Settings&) { s.terrain.far_material_m = float(v); },
+     [](const Settings& s) { return double(s.terrain.far_material_m); }, [](const Settings& s) { return s.terrain.enabled; }},
     // Sun shadows (bench shadows: error halves from 1024 to 4096 texels at 2-3x the cost).
     {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096},
      [](Settings& s, double v, const Settings&) { s.shadows.resolution = toInt(v); },

@@ -90,7 +90,14 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.choice({"view", "", "shaded, or colour by LOD level, morph factor, normal or screen error (px)"}, s.view, views);
     v.field({"wireframe", "", "overlay the node grids' edges"}, s.wireframe);
     v.field({"bounds", "", "draw the selected nodes' bounding boxes"}, s.bounds);
-    v.field({"detail_distance_m", "m", "detail textures fade out by this distance"}, s.detail_distance_m, 1.0f, 100000.0f);
+    v.field({"detail_distance_m", "m", "detail normals and triplanar rock fade out by this distance (near material tier)"},
+            s.detail_distance_m, 1.0f, 100000.0f);
+    v.field({"far_material_m", "m", "material textures give way to each layer's mean albedo by this distance, from 3/4 of it "
+                                    "(far material tier; 0: never)"},
+            s.far_material_m, 0.0f, 1.0e7f);
+    v.field({"material_tiers", "", "draw each distance tier of the material with its own program (off: the near tier's "
+                                   "everywhere: the same image, slower; for checking seams)"},
+            s.material_tiers);
     v.field({"texture_scale_m", "m", "size of one repeat of a material texture"}, s.texture_scale_m, 0.05f, 1000.0f);
     v.field({"sand_top", "", "heightmap value where beaches end"}, s.sand_top, 0.0f, 1.0f);
     v.field({"grass_top", "", "heightmap value where grass gives way to rock"}, s.grass_top, 0.0f, 1.0f);

@@ -83,7 +83,9 @@ struct TerrainSettings {
     TerrainView view = TerrainView::Shaded;
     bool wireframe = false;           //!< overlay node grid edges
     bool bounds = false;              //!< draw the selected nodes' bounding boxes
-    float detail_distance_m = 250.0f; //!< m, detail textures fade out by this distance
+    float detail_distance_m = 250.0f; //!< m, detail textures fade out by this distance (near material tier)
+    float far_material_m = 3000.0f;   //!< m, textures give way to each layer's mean albedo by here (far tier; 0: never)
+    bool material_tiers = true;       //!< one draw per material tier (off: the near tier's program everywhere, same image, slower)
     float texture_scale_m = 4.0f;     //!< m covered by one repeat of a material texture
     float sand_top = 0.135f;          //!< heightmap value where beaches end
     float grass_top = 0.45f;          //!< heightmap value where grass gives way to rock

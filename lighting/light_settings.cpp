@@ -127,6 +127,10 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     v.field({"cluster_near_m", "m", "near_0 of the slices near_k = near_0 * ratio^k; 0 = the camera's near plane"}, s.cluster_near_m, 0.0f, 1.0e4f);
     v.field({"cluster_far_m", "m", "view depth the slices reach; the last slice also takes all beyond"}, s.cluster_far_m, 1.0f, 1.0e7f);
     v.field({"max_lights_per_cell", "", "list capacity per tile or cluster; overflow is counted"}, s.max_lights_per_cell, 1, 4096);
+    v.field({"min_screen_px", "px",
+             "tiled and clustered: a light whose bounding sphere's screen radius is below this is skipped before any "
+             "per-tile work (0: none)"},
+            s.min_screen_px, 0.0f, 64.0f);
     v.field({"hash_node_m", "m", "leaf node size of the hashed light octree; 0 = half the mean radius"}, s.hash_node_m, 0.0f, 1.0e5f);
     v.field({"hash_memory_mb", "MiB", "memory bound of the hashed tables; beyond it nodes coarsen"}, s.hash_memory_mb, 1.0f, 65536.0f);
     v.field({"hash_slack", "", "extra hash table room for incremental updates (fraction)"}, s.hash_slack, 0.0f, 4.0f);

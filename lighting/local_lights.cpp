@@ -189,6 +189,12 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
     const bool screen_culled = stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered;
     const double ty = std::tan(glm::radians(view.fov_deg) * 0.5), tx = ty * double(view.width) / double(view.height);
     const double kx = std::sqrt(1.0 + tx * tx), ky = std::sqrt(1.0 + ty * ty);
+    // A sphere at depth z > r spans about r / z * focal pixels in radius: below min_screen_px it
+    // lights at most a few pixels, faintly (its falloff reaches 0 at the radius), and would still
+    // cost a test in every tile.
+    const double focal_px = 0.5 * double(view.height) / ty;
+    const double min_px = double(s.min_screen_px);
+    stats_.skipped = 0;
     std::vector<glm::vec4>& spheres = spheres_scratch_;  // view space, for the culling pass
     std::vector<std::uint32_t>& order = order_scratch_;  // members: their memory is reused every frame
     spheres.clear();
@@ -204,6 +210,10 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         if (world_spheres_[i].radius <= 0.0 || c.z < view.near_m - r || std::abs(c.x) > c.z * tx + r * kx ||
             std::abs(c.y) > c.z * ty + r * ky)
             continue;
+        if (min_px > 0.0 && c.z > r && r * focal_px < min_px * (c.z - r)) {  // r / (z - r): the widest it can look
+            ++stats_.skipped;
+            continue;
+        }
         order.push_back(std::uint32_t(i));
         spheres.push_back(glm::vec4(glm::vec3(c.x, c.y, -c.z), float(world_spheres_[i].radius)));
     }
@@ -410,7 +420,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 d.depth = b.read(targets.depth);
                 b.sideEffect();  // writes the light lists lights.shade reads
             },
-            [this, &rc, &counters, method, bindBuffers, forward = options.forward](const Data& d, PassContext& ctx) {
+            [this, &rc, &counters, method, bindBuffers, forward = options.forward, count = options.count](const Data& d,
+                                                                                                      PassContext& ctx) {
                 const std::size_t slot = write_slot_;
                 write_slot_ = (write_slot_ + 1) % overflow_ring_.size();
                 GLuint overflow = overflow_ring_[slot].id();
@@ -421,6 +432,10 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 const std::uint32_t zero = 0;
                 glClearNamedBufferData(overflow, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
                 glClearNamedBufferData(pool_buf_.buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+                if (!shade_draw_) shade_draw_ = gl::Buffer::create(16, nullptr, GL_DYNAMIC_STORAGE_BIT, "lights.shade draw");
+                const std::uint32_t draw[4] = {3, 0, 0, 0};  // a full-screen triangle, no instance yet
+                glNamedBufferSubData(shade_draw_.id(), 0, sizeof draw, draw);
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightShadeDraw, shade_draw_.id());
                 std::vector<std::string> defines = {methodDefine(method)};
                 if (forward) defines.push_back("LIGHTS_FORWARD");
                 glUseProgram(rc.shaders.get("lighting/shaders/light_cull.glsl", defines)->id());
@@ -429,10 +444,12 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());
                 glBindTextureUnit(binding::kTex0, ctx.texture(d.depth));
                 glDispatchCompute(GLuint(grid_.tiles_x), GLuint(grid_.tiles_y), 1);
-                glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+                glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                 // For the stats: a copy of the overflow count per frame; for the warning: the ring.
                 GLuint stat = counters.request(rc.frame, "lights.overflow");
                 glCopyNamedBufferSubData(overflow, stat, 0, 0, 4);
+                // 1 when lights.shade draws this frame, 0 when no tile has a light (with the light counters).
+                if (count) glCopyNamedBufferSubData(shade_draw_.id(), counters.request(rc.frame, "lights.shade_draws"), 4, 0, 4);
                 glCopyNamedBufferSubData(pool_buf_.buffer.id(), overflow, 0, 4, 4);  // the pool's demand
                 overflow_fence_[slot] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
             });
@@ -454,7 +471,7 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 data.heat = b.write(b.create("lights.heat", desc));
             }
         },
-        [this, &rc, &counters, method, options, bindBuffers](const Data& data, PassContext& ctx) {
+        [this, &rc, &counters, method, culled, options, bindBuffers](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             GLuint fb = data.heat.valid() ? rc.device.framebuffer({ctx.texture(data.hdr), ctx.texture(data.heat)})
                                           : rc.device.framebuffer({ctx.texture(data.hdr)});
@@ -483,7 +500,14 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             glEnablei(GL_BLEND, 0);
             glBlendFunci(0, GL_ONE, GL_ONE);
             if (data.heat.valid()) glDisablei(GL_BLEND, 1);
-            drawFullscreen(rc);
+            if (culled) {  // drawn only when lights.cull found a tile with a light
+                glBindVertexArray(rc.empty_vao);
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, shade_draw_.id());
+                glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+            } else {
+                drawFullscreen(rc);
+            }
             glDisablei(GL_BLEND, 0);
             if (data.spot.valid()) {
                 glBindSampler(binding::kSpotShadowMap, 0);

@@ -7,7 +7,9 @@
 //   lights.cull   (tiled, clustered) compute: per-tile / per-cluster light lists on the GPU, no
 //                 readback (lighting/shaders/light_cull.glsl);
 //   lights.shade  full screen: each lit pixel shades its candidate lights, added to the HDR target
-//                 (lighting/shaders/light_shade.glsl).
+//                 (lighting/shaders/light_shade.glsl). After lights.cull it is an indirect draw
+//                 with no instance unless some tile's list is non-empty: a frame whose lights
+//                 light no pixel shades nothing.
 // A scene with no local lights (or [lights] enabled = false) makes no LocalLights at all: no
 // passes, no buffers.
 //
@@ -66,6 +68,7 @@ std::vector<std::string> localLightPrograms();
 struct LocalLightStats {
     std::uint64_t count = 0;        // lights this frame
     std::uint64_t visible = 0;      // of them, on the GPU: tiled and clustered keep those whose sphere meets the view frustum
+    std::uint64_t skipped = 0;      // tiled, clustered: in the frustum but below min_screen_px on screen (not on the GPU)
     double build_ms = 0.0;          // CPU: collect, animate, hash update, upload
     std::size_t memory_bytes = 0;   // GPU buffers held
     LightCulling method = LightCulling::Clustered;  // the method used (hashed falls back to clustered when it cannot build)
@@ -136,6 +139,7 @@ private:
     ClusterGrid grid_;
     int max_lights_per_cell_ = 0;  // for the overflow warning
     GpuBuffer lights_buf_, spheres_buf_, cells_buf_, indices_buf_, hash_buf_, grid_ubo_, pool_buf_;
+    gl::Buffer shade_draw_;  // tiled, clustered: lights.shade's indirect draw; the cull pass sets its instance count
     std::array<gl::Buffer, 3> overflow_ring_;
     std::array<GLsync, 3> overflow_fence_{};
     std::size_t pool_entries_ = 0;    // list pool capacity (tiled, clustered)

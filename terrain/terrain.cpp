@@ -46,11 +46,42 @@ std::vector<std::uint32_t> gridIndices(int q) {
 
 }  // namespace
 
+std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
+    std::vector<std::string> defines;
+    if (s.view != TerrainView::Shaded)
+        defines.push_back("TERRAIN_VIEW=" + std::to_string(int(s.view)));  // the same for every tier
+    else
+        defines.push_back("MATERIAL_TIER=" + std::to_string(std::clamp(tier, 0, kMaterialTiers - 1)));
+    if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
+    return defines;
+}
+
+int materialTier(const TerrainSettings& s, double distance_m) {
+    if (!s.material_tiers) return 0;
+    // A quadrant is in a tier when every pixel of it could need that tier's features: the near
+    // tier's detail fade and triplanar rock end at detail_distance_m, the mid tier's textures at
+    // far_material_m. The margin covers float rounding of the drawn positions.
+    constexpr double kMargin = 1.0;  // m
+    if (distance_m < double(s.detail_distance_m) + kMargin) return 0;
+    if (s.far_material_m <= 0.0f || distance_m < double(std::max(s.far_material_m, s.detail_distance_m)) + kMargin) return 1;
+    return 2;
+}
+
 std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() {
-    return {{"terrain/shaders/terrain.glsl", {}},
-            {"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}},
-            {"terrain/shaders/normals.glsl", {}},
-            {"terrain/shaders/bounds.glsl", {}}};
+    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+    for (bool wireframe : {false, true}) {
+        TerrainSettings s;
+        s.wireframe = wireframe;
+        for (int tier = 0; tier < kMaterialTiers; ++tier) programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, tier)});
+        for (TerrainView view : {TerrainView::Lod, TerrainView::Morph, TerrainView::Normals, TerrainView::Error}) {
+            s.view = view;
+            programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
+        }
+    }
+    programs.push_back({"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}});
+    programs.push_back({"terrain/shaders/normals.glsl", {}});
+    programs.push_back({"terrain/shaders/bounds.glsl", {}});
+    return programs;
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
@@ -129,6 +160,21 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     }
 
     MaterialImages materials = generateMaterialImages();
+    // The far tier's colours: each layer's mean albedo, decoded from sRGB first (what the
+    // texture's last mip level holds), and mean roughness.
+    const std::size_t layer_texels = std::size_t(materials.size) * std::size_t(materials.size);
+    for (int l = 0; l < std::min(materials.layers, int(t->layer_mean_.size())); ++l) {
+        glm::dvec4 sum(0.0);
+        for (std::size_t i = 0; i < layer_texels; ++i) {
+            const std::uint8_t* px = &materials.albedo[(std::size_t(l) * layer_texels + i) * 4];
+            for (int c = 0; c < 3; ++c) {
+                double v = px[c] / 255.0;
+                sum[c] += v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+            }
+            sum.w += px[3] / 255.0;
+        }
+        t->layer_mean_[std::size_t(l)] = glm::vec4(sum / double(layer_texels));
+    }
     t->albedo_ = materialArray(materials.albedo, materials.size, materials.layers, GL_SRGB8_ALPHA8, "terrain albedo");
     t->detail_ = materialArray(materials.normal, materials.size, materials.layers, GL_RGBA8, "terrain detail normals");
     t->bias_.clear(t->tree_, t->mapping_);
@@ -192,17 +238,24 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
         drawn = &visible_;
     }
     instances_.clear();
-    appendInstances(drawn->nodes, instances_);
+    appendInstances(drawn->nodes, instances_, &distances_);
+    sortInstances(s, distances_);
     counters_.nodes = std::int64_t(drawn->nodes.size());
-    counters_.draws = instances_.empty() ? 0 : 1;
+    counters_.draws = 0;
+    for (int tier = 0; tier < kMaterialTiers; ++tier) {
+        counters_.tier_instances[std::size_t(tier)] = std::int64_t(tier_counts_[std::size_t(tier)]);
+        counters_.draws += tier_counts_[std::size_t(tier)] > 0 ? 1 : 0;
+    }
     counters_.triangles = std::int64_t(instances_.size()) * (index_count_ / 3);
     counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
 }
 
-void Terrain::appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out) const {
+void Terrain::appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out,
+                              std::vector<float>* distances) const {
     const std::size_t first = out.size();
+    if (distances) distances->clear();
     glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera_.x - source_.origin.x, camera_.z - source_.origin.z);
     for (const SelectedNode& node : nodes) {
         // The mesh is a half-node grid: a whole node is drawn as its four quadrants, a
@@ -216,8 +269,30 @@ void Terrain::appendInstances(const std::vector<SelectedNode>& nodes, std::vecto
             if (o.x >= map_max.x || o.y >= map_max.y) continue;  // a quadrant wholly past the map's edge
             out.push_back({glm::vec4(float(o.x), float(o.y), float(step.x), float(node.level)),
                            glm::vec4(float(c.x), float(c.y), float(step.y), 0.0f)});
+            if (distances) {  // nearest point of the quadrant's box to the camera (the origin)
+                glm::dvec3 lo(o.x, node.min_rel.y, o.y), hi(o.x + half.x, node.max_rel.y, o.y + half.y);
+                glm::dvec3 d = glm::max(glm::max(lo, -hi), glm::dvec3(0.0));
+                distances->push_back(float(glm::length(d)));
+            }
         }
     }
+}
+
+void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& distances) {
+    // Front to back, so the depth test rejects hidden fragments before they are shaded (a
+    // grazing view's quadtree order is back to front for half the screen); grouped by tier
+    // first, one draw each. Near tiers are nearer anyway, so the order stays front to back.
+    order_.resize(instances_.size());
+    for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    auto key = [&](std::uint32_t i) { return std::make_pair(materialTier(s, distances[i]), distances[i]); };
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    sorted_.resize(instances_.size());
+    tier_counts_.fill(0);
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        sorted_[k] = instances_[order_[k]];
+        ++tier_counts_[std::size_t(materialTier(s, distances[order_[k]]))];
+    }
+    instances_.swap(sorted_);
 }
 
 void Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const {
@@ -247,30 +322,44 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
     bindTiles(program, 10);
     glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
                        s.lod_metric == LodMetric::Error ? 1 : 0);
+    glProgramUniform1i(program, 25, 0);  // first instance: the whole bound range
     glBindTextureUnit(binding::kTex4, bias_texture_.id());
     glBindTextureUnit(binding::kTex0, height_.id());
     glBindVertexArray(vao_.id());
 }
 
-void Terrain::draw(const TerrainSettings& s, GLuint program) {
+void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs) {
     if (instances_.empty()) return;
     glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
-    setVertexState(s, program);
     glm::dvec3 rel = camera_ - s.origin;
-    glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
-    glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
-    glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
-    glProgramUniform1i(program, 7, int(s.view));
-    glProgramUniform1i(program, 8, s.wireframe ? 1 : 0);
-    glProgramUniform1f(program, 13, s.max_error_px);
-    glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
-    glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
-    glProgramUniform1f(program, 17, wetness_);
+    // Textures give way to the layer means over the last quarter before far_material_m (never
+    // inside the near tier); 0 keeps them at every distance.
+    const float far_end = s.far_material_m > 0.0f ? std::max(s.far_material_m, s.detail_distance_m) : 3.0e38f;
+    const float far_start = s.far_material_m > 0.0f ? std::max(0.75f * far_end, s.detail_distance_m) : 2.0e38f;
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
-    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances_.size()));
+    std::size_t first = 0;
+    for (int tier = 0; tier < kMaterialTiers; ++tier) {
+        const std::size_t count = tier_counts_[std::size_t(tier)];
+        if (count == 0) continue;
+        const GLuint program = programs[std::size_t(tier)];
+        glUseProgram(program);
+        setVertexState(s, program);
+        glProgramUniform1i(program, 25, GLint(first));
+        glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
+        glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
+        glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
+        glProgramUniform2f(program, 7, far_start, far_end);
+        glProgramUniform1f(program, 13, s.max_error_px);
+        glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
+        glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
+        glProgramUniform1f(program, 17, wetness_);
+        glProgramUniform4fv(program, 20, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
+        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+        first += count;
+    }
 }
 
 void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot) {
@@ -372,12 +461,19 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             GLuint fb = rc.device.framebuffer(
                 {ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)}, ctx.texture(data.t.depth));
             bindTarget(fb, desc.width, desc.height);
-            GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl")->id();
-            glUseProgram(program);
+            std::array<GLuint, kMaterialTiers> programs{};
+            for (int tier = 0; tier < kMaterialTiers; ++tier)
+                programs[std::size_t(tier)] = rc.shaders.get("terrain/shaders/terrain.glsl", terrainDefines(s, tier))->id();
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
-            terrain.draw(s, program);
+            // The grid's triangles wind counter-clockwise seen from above: a heightfield's back
+            // faces are always hidden behind its front faces, so they need no shading.
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(GL_CCW);
+            terrain.draw(s, programs);
+            glDisable(GL_CULL_FACE);
             glDisable(GL_DEPTH_TEST);
         });
     targets = d.t;

@@ -19,8 +19,13 @@
 
 namespace vista {
 
+// Material tiers of the terrain shader by distance (terrain.glsl MATERIAL_TIER): near (detail
+// normals, triplanar rock), mid (albedo only), far (each layer's mean albedo).
+inline constexpr int kMaterialTiers = 3;
+
 struct TerrainCounters {
     std::int64_t triangles = 0, nodes = 0, draws = 0;
+    std::array<std::int64_t, kMaterialTiers> tier_instances{};  // drawn quadrants per material tier
     double select_ms = 0.0;
     double base_range_m = 0.0;  // LOD 0 range in use (after the node-size and error bounds)
 };
@@ -81,8 +86,9 @@ public:
     // How wet the ground is (0 dry .. 1 soaked: darker, glossier). Set by the weather feature.
     void setWetness(float wetness) { wetness_ = wetness; }
 
-    // Draws the current instances with the bound program's terrain uniforms set.
-    void draw(const TerrainSettings& s, GLuint program);  // uploads a remade bias first
+    // Draws the current instances, front to back, one instanced draw per material tier with
+    // programs[tier] (terrainDefines()); uploads a remade bias first.
+    void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs);
 
     // The instances of the current selection inside planes (camera-relative), for a shadow pass.
     void shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const;
@@ -111,8 +117,12 @@ public:
 
 private:
     Terrain() = default;
-    // Appends the draw instances (quadrants) of nodes to out, at most kMaxInstances in all.
-    void appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out) const;
+    // Appends the draw instances (quadrants) of nodes to out, at most kMaxInstances in all;
+    // with tiers, the nearest distance (m) from the camera to each quadrant's box goes there too.
+    void appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out,
+                         std::vector<float>* distances = nullptr) const;
+    // Orders instances_ by material tier, then front to back, and counts each tier's.
+    void sortInstances(const TerrainSettings& s, const std::vector<float>& distances);
     // Sets the vertex stage's terrain uniforms and textures (the shadow pass needs only these).
     void setVertexState(const TerrainSettings& s, GLuint program);
 
@@ -130,6 +140,11 @@ private:
     std::array<double, 7> bias_key_{};  // what bias_ and lod_.base_range_m were made for
     bool bias_dirty_ = true;            // bias_ not yet in bias_texture_
     std::vector<TerrainInstance> instances_;
+    std::vector<float> distances_;              // scratch for select(): nearest distance per instance
+    std::vector<std::uint32_t> order_;          // scratch for sortInstances()
+    std::vector<TerrainInstance> sorted_;       // scratch for sortInstances()
+    std::array<std::size_t, kMaterialTiers> tier_counts_{};  // instances_ per tier, in order
+    std::array<glm::vec4, 5> layer_mean_{};     // each material layer's mean linear albedo, roughness
     TerrainCounters counters_;
     glm::dvec3 camera_{0.0};
     glm::vec4 far_grass_{0.0f};
@@ -149,6 +164,12 @@ private:
 // with [terrain] bounds, "terrain.bounds" draws their boxes over it.
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,
                     SceneTargets& targets);
+
+// The G-buffer program's defines for a material tier (0 near .. 2 far) and the settings' debug
+// view and wireframe (terrain.glsl: debug views are variants, so the shaded image pays nothing).
+std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier);
+// Material tier of a quadrant whose box is distance_m from the camera at its nearest.
+int materialTier(const TerrainSettings& s, double distance_m);
 
 std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms();
 

@@ -98,7 +98,8 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
     u.grid = glm::vec4(float(grid_.ring_constant), float(grid_.angle), float(grid_.segments), float(a.size()));
     u.surface = glm::vec4(float(-height), s.roughness, s.refraction_strength, s.foam_depth_m);
     u.scatter = glm::vec4(s.scatter_color, s.whitecaps);
-    u.absorption = glm::vec4(s.absorption_per_m, float(int(s.view)));
+    u.absorption = glm::vec4(s.absorption_per_m, 0.0f);
+    view_ = s.view;
     // Foam bands drift up the shore at 0.8 rad/s, wrapped in double.
     u.foam = glm::vec4(s.foam_color, float(std::fmod(0.8 * time_s, 2.0 * std::numbers::pi)));
     u.sun = glm::vec4(light.sun_irradiance, sky_lut ? 1.0f : 0.0f);
@@ -140,8 +141,14 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         TextureHandle color, depth_copy, sky_view, shadow, hdr, depth;
     };
     std::vector<std::string> defines;
-    if (lights) defines.push_back(lights->define());
-    if (shadows.valid()) defines.push_back("HAS_SUN_SHADOW");
+    if (view_ != WaterView::Shaded) {
+        // A debug view is a variant (the shaded surface pays nothing for it); it replaces the
+        // colour, so it needs neither lights nor shadows.
+        defines.push_back("WATER_VIEW=" + std::to_string(int(view_)));
+    } else {
+        if (lights) defines.push_back(lights->define());
+        if (shadows.valid()) defines.push_back("HAS_SUN_SHADOW");
+    }
     const SurfaceData& d = graph.addPass<SurfaceData>("water.surface",
         [&](PassBuilder& b, SurfaceData& data) {
             data.color = b.read(c.color);
@@ -214,6 +221,8 @@ std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
         {kCopyProgram, {}}, {kSurfaceProgram, {}}, {kUnderwaterProgram, {}}};
     programs.push_back({kSurfaceProgram, {"HAS_SUN_SHADOW"}});
+    for (WaterView view : {WaterView::Normals, WaterView::Foam, WaterView::Depth})
+        programs.push_back({kSurfaceProgram, {"WATER_VIEW=" + std::to_string(int(view))}});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({kSurfaceProgram, {method}});
         programs.push_back({kSurfaceProgram, {method, "HAS_SUN_SHADOW"}});

@@ -91,6 +91,7 @@ private:
     gl::VertexArray vao_;
     gl::Buffer indices_, uniforms_;
     WaterStats stats_;
+    WaterView view_ = WaterView::Shaded;  // as prepared: the surface program's WATER_VIEW variant
 };
 
 // Every program the water uses (for FrameRenderer::allPrograms()).

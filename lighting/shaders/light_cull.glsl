@@ -27,6 +27,9 @@ layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(std430, binding = BINDING_LIGHT_SPHERES) readonly buffer Spheres { vec4 u_spheres[]; };  // view space centre, radius
 layout(std430, binding = BINDING_COUNTERS) buffer Overflow { uint u_overflow; };
 layout(std430, binding = BINDING_AUX) buffer Pool { uint u_pool_used; };
+// lights.shade's indirect draw (count, instances, first, base instance): the CPU sets 0
+// instances, any tile with a light sets 1, so a frame whose lights reach no tile shades nothing.
+layout(std430, binding = BINDING_LIGHT_SHADE_DRAW) buffer ShadeDraw { uint u_shade_draw[4]; };
 
 const uint kSharedCap = 4096u;  // tile list capacity in shared memory (16 KiB)
 shared uint s_depth_min, s_depth_max;  // float bits of view depths (positive: ordered as uints)
@@ -138,6 +141,7 @@ void main() {
         barrier();
     }
 
+    if (t == 0u && s_count > 0u) u_shade_draw[1] = 1u;
 #ifdef LIGHTS_TILED
     // 3. The tile's list into the pool, copied by all threads.
     uint cell = tile.x + u_grid.z * tile.y;

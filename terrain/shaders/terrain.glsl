@@ -1,8 +1,8 @@
 // CDLOD terrain: a half-node grid mesh drawn once per selected quadrant (instanced), heights
 // from the height texture, each vertex morphing toward the next coarser grid; per-pixel
-// normals from the normal map, height/slope material splatting with detail normals.
-// Writes the G-buffer (renderer/scene_targets.h); lighting.* light it. The debug views
-// (LOD, morph, normals, screen error) write their colour as unlit emissive radiance.
+// normals from the normal map, height/slope material splatting with detail normals, in three
+// distance tiers. Writes the G-buffer (renderer/scene_targets.h); lighting.* light it. The
+// debug views (LOD, morph, normals, screen error) write their colour as unlit emissive radiance.
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
 #include "tiles.glsl"
@@ -25,6 +25,7 @@ layout(location = 3) uniform vec2 u_height_map;    // height = offset + scale * 
 layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of the last texel (m)
 layout(location = 12) uniform ivec4 u_bias_cells;  // leaf cells in x, z; texels per cell; bias on (1) / off (0)
 layout(location = 13) uniform float u_max_error_px;  // the LOD's screen error bound (error view)
+layout(location = 25) uniform int u_first_instance;  // this draw's first entry in u_instances (one draw per tier)
 
 // The full-resolution terrain surface at texel coordinates t (tiles.glsl).
 float surfaceSample(vec2 t) {
@@ -73,7 +74,7 @@ float distanceBias(vec2 t) {
 }
 
 void main() {
-    Instance inst = u_instances[gl_InstanceID];
+    Instance inst = u_instances[u_first_instance + gl_InstanceID];
     int side = u_quads + 1;
     vec2 grid = vec2(gl_VertexID % side, gl_VertexID / side);
     vec2 step_m = vec2(inst.a.z, inst.b.z);
@@ -110,17 +111,21 @@ void main() {}  // depth only
 #endif
 
 #if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS)
+// Program variants (terrain.cpp terrainProgram()), so no pixel pays for what its draw does not
+// show (llvmpipe runs both sides of a branch): TERRAIN_VIEW 1 LOD, 2 morph, 3 normals, 4 screen
+// error (debug views, unlit); otherwise MATERIAL_TIER 0, 1 or 2 (below); TERRAIN_WIREFRAME
+// darkens the grid's edges.
 layout(binding = BINDING_TEX_2) uniform sampler2DArray u_albedo;  // sRGB albedo, A = roughness
 layout(binding = BINDING_TEX_3) uniform sampler2DArray u_detail;  // tangent-space normals
 
 layout(location = 4) uniform vec4 u_bands;     // sand_top, grass_top, snow_start, band_blend
 layout(location = 5) uniform vec4 u_material;  // band_jitter, rock_slope, 1 / texture_scale_m, detail_distance_m
 layout(location = 6) uniform vec2 u_tex_offset;  // camera x, z modulo the texture period (m)
-layout(location = 7) uniform int u_terrain_view;       // 0 shaded, 1 LOD, 2 morph, 3 normals, 4 screen error
-layout(location = 8) uniform int u_wireframe;
+layout(location = 7) uniform vec2 u_far_fade;    // m: where textures start to give way to layer means, and are gone
 layout(location = 14) uniform vec4 u_grass_far;   // grass blades' mean albedo (linear), strength (0: no grass)
 layout(location = 15) uniform vec2 u_grass_fade;  // distance (m) where the far grass colour starts, and is full
 layout(location = 17) uniform float u_wetness;    // rain ([weather]): 0 dry .. 1 soaked
+layout(location = 20) uniform vec4 u_layer_mean[5];  // each layer's mean linear albedo, roughness (far tier)
 
 in vec3 v_rel;
 in vec2 v_texel;
@@ -140,113 +145,151 @@ vec3 lodColor(float level) {
     return colors[int(level) % 8];
 }
 
-// Albedo (linear) + roughness and the detail normal of one layer, planar in x/z.
-void layerSample(int layer, vec2 uv, out vec4 albedo, out vec3 detail) {
-    albedo = texture(u_albedo, vec3(uv, float(layer)));
-    detail = texture(u_detail, vec3(uv, float(layer))).xyz * 2.0 - 1.0;
-}
-
 // Darkens the grid mesh's edges (terrain wireframe): 0 away from an edge, up to 0.8 on it.
 float wireframe() {
-    if (u_wireframe == 0) return 0.0;
+#ifdef TERRAIN_WIREFRAME
     vec2 g = abs(fract(v_grid - 0.5) - 0.5) / max(fwidth(v_grid), vec2(1e-6));
     return (1.0 - min(min(g.x, g.y), 1.0)) * 0.8;
+#else
+    return 0.0;
+#endif
+}
+
+#ifdef TERRAIN_VIEW
+void main() {
+    vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
+    float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
+    // Debug views are unlit: their colour goes to the HDR target, the G-buffer says "unlit".
+    o_albedo = vec4(0.0);
+    o_normal = vec4(encodeNormal(n), 0.0, 0.0);
+#if TERRAIN_VIEW == 4
+    // Vertical screen error: the drawn point and the full-resolution surface below or
+    // above it, both projected; alpha holds the error in pixels (vista bench terrain reads it).
+    float truth = u_height_map.y + u_height_map.x * surfaceSample(v_texel);
+    vec4 a = u_view_proj * vec4(v_rel, 1.0), b = u_view_proj * vec4(v_rel.x, truth, v_rel.z, 1.0);
+    float px = length((a.xy / a.w - b.xy / b.w) * 0.5 * u_viewport.xy);
+    float e = px / max(u_max_error_px, 1e-6);
+    vec3 c = e <= 1.0 ? mix(vec3(0.1, 0.25, 0.8), vec3(1.0, 0.9, 0.1), e) : mix(vec3(1.0, 0.4, 0.0), vec3(1.0, 0.0, 0.6), min(e - 1.0, 1.0));
+    o_color = vec4(c * (0.5 + 0.5 * max(dot(n, u_sun_dir.xyz), 0.0)), px);
+#else
+#if TERRAIN_VIEW == 1
+    vec3 c = lodColor(v_lod.x);
+#elif TERRAIN_VIEW == 2
+    vec3 c = vec3(v_morph, 1.0 - v_morph, 0.2);
+#else
+    vec3 c = n * 0.5 + 0.5;
+#endif
+    o_color = vec4(c * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), 1.0);
+#endif
+    o_color.rgb *= 1.0 - wire;
+}
+#else
+// Material tiers, one instanced draw each (terrain.cpp picks a tier per quadrant from its
+// distance; every tier computes the same image where its neighbours meet it, so no seam):
+//   0 near (closer than detail_distance_m): every layer with its detail normal, triplanar rock;
+//     the detail normals fade out and the triplanar rock gives way to tier 1's planar rock
+//     towards detail_distance_m;
+//   1 mid: albedo only, rock planar along the normal's main axis; textures give way to each
+//     layer's mean albedo between u_far_fade.x and .y (where mip-mapping has nearly got there);
+//   2 far (beyond u_far_fade.y): the layer means, no material texture at all.
+// Each tier also draws every farther tier's quadrants as that tier would (up to rounding), so
+// [terrain] material_tiers = false (the near tier everywhere) shows any seam by comparison.
+#ifndef MATERIAL_TIER
+#define MATERIAL_TIER 0
+#endif
+
+// Albedo (linear) + roughness of one layer, and its detail normal in the near tier.
+vec4 layerAlbedo(int layer, vec2 uv, float textured) {
+#if MATERIAL_TIER == 2
+    return u_layer_mean[layer];
+#else  // the near tier too, so that it draws any quadrant as its tier would ([terrain] material_tiers off)
+    return mix(u_layer_mean[layer], texture(u_albedo, vec3(uv, float(layer))), textured);
+#endif
+}
+vec3 layerDetail(int layer, vec2 uv) {
+    return texture(u_detail, vec3(uv, float(layer))).xyz * 2.0 - 1.0;
 }
 
 void main() {
     vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
     float dist = length(v_rel);
     float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
-    // Debug views are unlit: their colour goes to the HDR target, the G-buffer says "unlit".
-    o_albedo = vec4(0.0);
-    o_normal = vec4(encodeNormal(n), 0.0, 0.0);
-    if (u_terrain_view == 4) {
-        // Vertical screen error: the drawn point and the full-resolution surface below or
-        // above it, both projected; alpha holds the error in pixels (vista bench terrain reads it).
-        float truth = u_height_map.y + u_height_map.x * surfaceSample(v_texel);
-        vec4 a = u_view_proj * vec4(v_rel, 1.0), b = u_view_proj * vec4(v_rel.x, truth, v_rel.z, 1.0);
-        float px = length((a.xy / a.w - b.xy / b.w) * 0.5 * u_viewport.xy);
-        float e = px / max(u_max_error_px, 1e-6);
-        vec3 c = e <= 1.0 ? mix(vec3(0.1, 0.25, 0.8), vec3(1.0, 0.9, 0.1), e) : mix(vec3(1.0, 0.4, 0.0), vec3(1.0, 0.0, 0.6), min(e - 1.0, 1.0));
-        o_color = vec4(c * (0.5 + 0.5 * max(dot(n, u_sun_dir.xyz), 0.0)), px);
-    } else if (u_terrain_view == 1 || u_terrain_view == 2 || u_terrain_view == 3) {
-        vec3 c = n * 0.5 + 0.5;
-        if (u_terrain_view == 1) c = lodColor(v_lod.x);
-        if (u_terrain_view == 2) c = vec3(v_morph, 1.0 - v_morph, 0.2);
-        o_color = vec4(c * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), 1.0);
-    } else {
-        vec2 world_xz = v_rel.xz + u_tex_offset;
-        vec2 uv = world_xz * u_material.z;
-        // Height bands (001): L = sum of clamp((h - start_i) / blend, 0, 1); layer floor(L)
-        // blends into the next by fract(L). The height is jittered to break the bands.
-        vec4 a0;
-        vec3 d0;
-        layerSample(ROCK, world_xz * (u_material.z * 0.031), a0, d0);
-        float h = v_sample + bandJitter(a0.g, u_material.x);
-        float bands = materialBands(h, u_bands);
-        const int order[4] = int[](SAND, GRASS, ROCK, SNOW);
-        int lower = int(min(floor(bands), 3.0));
-        float t = bands - float(lower);
-        vec4 albedo_a, albedo_b;
-        vec3 detail_a, detail_b;
-        layerSample(order[lower], uv, albedo_a, detail_a);
-        layerSample(order[min(lower + 1, 3)], uv, albedo_b, detail_b);
-        vec4 albedo = mix(albedo_a, albedo_b, t);
-        vec3 detail = mix(detail_a, detail_b, t);
-        // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar so cliffs
-        // do not stretch. Snow holds on flatter ground only.
-        float rock = rockWeight(n.y, u_material.y);
-        float dirt = dirtWeight(n.y, u_material.y, rock, bands);
-        // Beyond the grass blades' reach the grass layer takes their colour, so the meadow
-        // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
-        float far_grass = grassWeight(bands, rock, dirt) * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
-        if (dirt > 0.0) {
-            vec4 da;
-            vec3 dd;
-            layerSample(DIRT, uv, da, dd);
-            albedo = mix(albedo, da, dirt);
-            detail = mix(detail, dd, dirt);
-        }
-        if (rock > 0.0) {
-            vec3 w = pow(abs(n), vec3(4.0));
-            w /= w.x + w.y + w.z;
-            vec3 p = (v_rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
-            vec4 ax, ay, az;
-            vec3 dx, dy, dz;
-            layerSample(ROCK, p.zy, ax, dx);
-            layerSample(ROCK, p.xz, ay, dy);
-            layerSample(ROCK, p.xy, az, dz);
-            albedo = mix(albedo, ax * w.x + ay * w.y + az * w.z, rock);
-            detail = mix(detail, dx * w.x + dy * w.y + dz * w.z, rock);
-        }
-        // Detail normals through the in-shader tangent frame (001: texture coordinates follow
-        // x/z), fading out with distance.
-        float fade = 1.0 - smoothstep(u_material.w * 0.5, u_material.w, dist);
-        vec3 tangent = safeNormalize(cross(n, vec3(0.0, 0.0, 1.0)));
-        vec3 bitangent = safeNormalize(vec3(0.0, -n.z, n.y));
-        vec3 nd = safeNormalize(tangent * detail.x + bitangent * detail.y + n * max(detail.z, 0.05));
-        vec3 shading_n = safeNormalize(mix(n, nd, fade));
-
-        albedo.rgb = mix(albedo.rgb, u_grass_far.rgb, far_grass);
-        if (u_wetness > 0.0) {
-            // Wet ground: water in the pores darkens soil and sand (less on rock, little on
-            // snow) and a water film makes every layer glossier.
-            float snow = clamp(bands - 2.0, 0.0, 1.0) * (1.0 - rock);
-            float porous = (1.0 - 0.5 * rock) * (1.0 - 0.8 * snow);
-            albedo.rgb *= 1.0 - 0.55 * u_wetness * porous;
-            albedo.a = mix(albedo.a, 0.15, 0.85 * u_wetness);
-        }
-
-        Surface surface;
-        surface.albedo = albedo.rgb * (1.0 - wire);
-        surface.roughness = clamp(albedo.a, 0.05, 1.0);
-        surface.normal = shading_n;
-        surface.f0 = 0.04;  // dielectric: soil, rock, snow
-        surface.lit = true;
-        encodeSurface(surface, o_albedo, o_normal);
-        o_color = vec4(0.0, 0.0, 0.0, 1.0);  // terrain emits nothing
-        return;
+    vec2 world_xz = v_rel.xz + u_tex_offset;
+    vec2 uv = world_xz * u_material.z;
+    // Detail (near tier) and texture (mid tier) weights by distance.
+    float detail_fade = 1.0 - smoothstep(u_material.w * 0.5, u_material.w, dist);
+    float textured = 1.0 - smoothstep(u_far_fade.x, u_far_fade.y, dist);
+    // Height bands (001): L = sum of clamp((h - start_i) / blend, 0, 1); layer floor(L)
+    // blends into the next by fract(L). The height is jittered to break the bands (the coarse
+    // rock noise: every tier fetches it, so band edges match across tiers).
+    float noise = texture(u_albedo, vec3(world_xz * (u_material.z * 0.031), float(ROCK))).g;
+    float h = v_sample + bandJitter(noise, u_material.x);
+    float bands = materialBands(h, u_bands);
+    const int order[4] = int[](SAND, GRASS, ROCK, SNOW);
+    int lower = int(min(floor(bands), 3.0));
+    float t = bands - float(lower);
+    int upper = order[min(lower + 1, 3)];
+    vec4 albedo = mix(layerAlbedo(order[lower], uv, textured), layerAlbedo(upper, uv, textured), t);
+#if MATERIAL_TIER == 0
+    vec3 detail = mix(layerDetail(order[lower], uv), layerDetail(upper, uv), t);
+#endif
+    // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar near the camera so
+    // cliffs do not stretch. Snow holds on flatter ground only.
+    float rock = rockWeight(n.y, u_material.y);
+    float dirt = dirtWeight(n.y, u_material.y, rock, bands);
+    // Beyond the grass blades' reach the grass layer takes their colour, so the meadow
+    // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
+    float far_grass = grassWeight(bands, rock, dirt) * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
+    if (dirt > 0.0) {
+        albedo = mix(albedo, layerAlbedo(DIRT, uv, textured), dirt);
+#if MATERIAL_TIER == 0
+        detail = mix(detail, layerDetail(DIRT, uv), dirt);
+#endif
     }
-    o_color.rgb *= 1.0 - wire;
+    if (rock > 0.0) {
+        vec3 p = (v_rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
+        // Planar rock along the normal's main axis (tiers 0 and 1; tier 2: the mean).
+        vec3 an = abs(n);
+        vec2 main_uv = an.x >= an.y && an.x >= an.z ? p.zy : an.y >= an.z ? p.xz : p.xy;
+        vec4 rock_albedo = layerAlbedo(ROCK, main_uv, textured);
+#if MATERIAL_TIER == 0
+        vec3 w = pow(an, vec3(4.0));
+        w /= w.x + w.y + w.z;
+        vec4 tri = texture(u_albedo, vec3(p.zy, ROCK)) * w.x + texture(u_albedo, vec3(p.xz, ROCK)) * w.y +
+                   texture(u_albedo, vec3(p.xy, ROCK)) * w.z;
+        rock_albedo = mix(rock_albedo, tri, detail_fade);
+        detail = mix(detail, layerDetail(ROCK, p.zy) * w.x + layerDetail(ROCK, p.xz) * w.y + layerDetail(ROCK, p.xy) * w.z, rock);
+#endif
+        albedo = mix(albedo, rock_albedo, rock);
+    }
+    vec3 shading_n = n;
+#if MATERIAL_TIER == 0
+    // Detail normals through the in-shader tangent frame (001: texture coordinates follow
+    // x/z), fading out with distance.
+    vec3 tangent = safeNormalize(cross(n, vec3(0.0, 0.0, 1.0)));
+    vec3 bitangent = safeNormalize(vec3(0.0, -n.z, n.y));
+    vec3 nd = safeNormalize(tangent * detail.x + bitangent * detail.y + n * max(detail.z, 0.05));
+    shading_n = safeNormalize(mix(n, nd, detail_fade));
+#endif
+
+    albedo.rgb = mix(albedo.rgb, u_grass_far.rgb, far_grass);
+    if (u_wetness > 0.0) {
+        // Wet ground: water in the pores darkens soil and sand (less on rock, little on
+        // snow) and a water film makes every layer glossier.
+        float snow = clamp(bands - 2.0, 0.0, 1.0) * (1.0 - rock);
+        float porous = (1.0 - 0.5 * rock) * (1.0 - 0.8 * snow);
+        albedo.rgb *= 1.0 - 0.55 * u_wetness * porous;
+        albedo.a = mix(albedo.a, 0.15, 0.85 * u_wetness);
+    }
+
+    Surface surface;
+    surface.albedo = albedo.rgb * (1.0 - wire);
+    surface.roughness = clamp(albedo.a, 0.05, 1.0);
+    surface.normal = shading_n;
+    surface.f0 = 0.04;  // dielectric: soil, rock, snow
+    surface.lit = true;
+    encodeSurface(surface, o_albedo, o_normal);
+    o_color = vec4(0.0, 0.0, 0.0, 1.0);  // terrain emits nothing
 }
+#endif
 #endif

@@ -10,6 +10,7 @@
 // Seen from below (camera under water), the surface shows the sky (or the scene) refracted
 // through it, or the water by total internal reflection. Variants: the local-light method
 // (LIGHTS_NAIVE, _TILED, _CLUSTERED, _HASHED) or none; HAS_SUN_SHADOW (the sun's cascades).
+// WATER_VIEW 1 normals, 2 foam, 3 water depth: debug views (no lights or shadows).
 // Both stages: included once per file (the shader library expands each file once).
 #include "../../renderer/shaders/common.glsl"
 #include "waves.glsl"
@@ -230,10 +231,13 @@ void main() {
         }
     }
 
-    int view = int(w_absorption.w);
-    if (view == 1) color = n * 0.5 + 0.5;
-    else if (view == 2) color = vec3(foam);
-    else if (view == 3) color = vec3(clamp(column / 10.0, 0.0, 1.0), clamp(thickness / 10.0, 0.0, 1.0), below ? 1.0 : 0.0);
+#if WATER_VIEW == 1
+    color = n * 0.5 + 0.5;
+#elif WATER_VIEW == 2
+    color = vec3(foam);
+#elif WATER_VIEW == 3
+    color = vec3(clamp(column / 10.0, 0.0, 1.0), clamp(thickness / 10.0, 0.0, 1.0), below ? 1.0 : 0.0);
+#endif
     o_color = vec4(clamp(color, vec3(0.0), vec3(60000.0)), 0.0);
 }
 #endif

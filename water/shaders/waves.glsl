@@ -10,7 +10,7 @@ layout(std140, binding = WATER_BINDING_UNIFORMS) uniform WaterUniforms {
     vec4 w_grid;        // x ring constant c (m), y angle per segment (rad), z segments, w waves
     vec4 w_surface;     // x still level minus camera y (m), y roughness, z refraction strength, w foam depth (m)
     vec4 w_scatter;     // rgb single-scattering albedo, w whitecaps
-    vec4 w_absorption;  // rgb extinction (1/m), w debug view (0 shaded, 1 normals, 2 foam, 3 depth)
+    vec4 w_absorption;  // rgb extinction (1/m), unused
     vec4 w_foam;        // rgb foam albedo, w foam animation phase (rad, wrapped)
     vec4 w_sun;         // rgb sun irradiance at normal incidence, w 1 when the sky-view LUT is bound
     vec4 w_sky_up;      // rgb sky irradiance on an up-facing surface, w ray-march steps (0: sky reflection only)
