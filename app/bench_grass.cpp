@@ -76,7 +76,7 @@ int runBenchGrass(const Settings& scene, const BenchGrassOptions& o) {
                           {"radius_m", s.grass.radius_m},
                           {"reference_copy_ms", copy_ms},
                           {"rows", rows}};
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

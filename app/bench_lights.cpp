@@ -191,7 +191,7 @@ int runBenchLights(const Settings& scene, const BenchLightsOptions& o) {
                               {"radius_m", o.radius_m},
                               {"renderer", context->renderer()},
                               {"backend", backendName(o.backend)}};
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
+        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n", o.force);
         if (!problem.empty()) return fail(1, problem);
     }
     return 0;

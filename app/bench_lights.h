@@ -21,6 +21,7 @@ struct BenchLightsOptions {
     float radius_m = 40.0f;           // every light's radius
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;       // empty: table only
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // Returns the exit code.

@@ -361,7 +361,7 @@ int runBenchShadows(const Settings& scene, const BenchShadowsOptions& o) {
         out["frame_cost"] = costs;
     }
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

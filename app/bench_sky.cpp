@@ -214,7 +214,7 @@ int runBenchSky(const Settings& scene, const BenchSkyOptions& o) {
         {"clouds", cloud_rows},
     };
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

@@ -13,6 +13,7 @@ struct BenchSkyOptions {
     int width = 320, height = 180;  // frame size for the timings
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;     // empty: table only
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // Returns the exit code.

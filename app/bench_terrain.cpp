@@ -161,7 +161,7 @@ int runBenchTerrain(const Settings& scene, const BenchTerrainOptions& o) {
         std::string value = it.value().dump();
         std::printf("%-32s %s\n", it.key().c_str(), value.c_str());
     }
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

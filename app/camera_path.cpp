@@ -8,6 +8,7 @@
 // yaw on values unwrapped along the shortest arc. End keys use the zero-curvature
 // ("natural") condition: the second derivative is zero at the first and last key.
 #include "app/camera_path.h"
+#include "config/file_io.h"
 
 #include <glm/geometric.hpp>
 
@@ -206,20 +207,13 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& name, Inp
 }
 
 CameraPath CameraPath::load(const std::filesystem::path& file, InputErrors& errors, double default_fov_deg) {
-    auto fail = [&](int err) {
-        errors.push_back({file.string(), 0, std::string("cannot read camera path: ") + std::strerror(err)});
+    // Regular files under a size limit only: a FIFO blocked forever and /dev/zero filled memory.
+    std::string text;
+    if (std::string why = readInputFile(file, kMaxTextInputBytes, text); !why.empty()) {
+        errors.push_back({file.string(), 0, "camera path " + why.substr(std::min(why.size(), file.string().size() + 2))});
         return CameraPath();
-    };
-    // A directory opens as a stream and reads as empty, so it would pass for a short file.
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) return fail(EISDIR);
-    errno = 0;
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return fail(errno != 0 ? errno : EIO);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return fail(errno != 0 ? errno : EIO);
-    return parse(text.str(), file.string(), errors, default_fov_deg);
+    }
+    return parse(text, file.string(), errors, default_fov_deg);
 }
 
 double CameraPath::startTime() const { return keys_.empty() ? 0.0 : keys_.front().t; }

@@ -10,7 +10,7 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <unistd.h>
 
 namespace vista {
 
@@ -24,12 +24,35 @@ std::string checkWritableDir(const std::filesystem::path& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return dir.string() + ": cannot create output directory (" + ec.message() + ")";
-    std::filesystem::path probe = dir / ".vista-write-test";
-    {
-        std::ofstream out(probe);
-        if (!out) return dir.string() + ": output directory is not writable";
+    // access(), not a probe file: a fixed probe name would race with a second capture.
+    if (!std::filesystem::is_directory(dir, ec)) return dir.string() + ": is not a directory";
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) return dir.string() + ": output directory is not writable";
+    return {};
+}
+
+std::string checkCaptureOutputs(const CaptureJob& job) {
+    const CaptureSettings& c = job.settings.capture;
+    std::vector<std::filesystem::path> inputs = job.inputs;
+    inputs.push_back(resolveInput(c.path));
+    inputs.push_back(resolveInput(job.settings.terrain.heightmap));
+    if (!job.settings.grade.lut.empty()) inputs.push_back(resolveInput(job.settings.grade.lut));
+    const std::pair<const char*, const std::filesystem::path*> outputs[] = {{"--stats", &job.stats_file},
+                                                                            {"--dot", &job.dot_file}};
+    for (const auto& [option, file] : outputs) {
+        if (file->empty()) continue;
+        std::string problem = checkOutputFile(*file, job.force, option);
+        if (!problem.empty()) return problem;
+        for (const auto& input : inputs)
+            if (samePath(*file, input))
+                return std::string(option) + " " + file->string() + ": is an input of this capture; choose another name";
+        std::filesystem::path dir = file->parent_path().empty() ? std::filesystem::path(".") : file->parent_path();
+        const std::string frame_ext = c.format == ImageFormat::Exr ? ".exr" : ".png";
+        if (job.write_images && samePath(dir, c.out) && file->filename().string().rfind("frame_", 0) == 0 &&
+            file->extension() == frame_ext)
+            return std::string(option) + " " + file->string() + ": would replace a captured frame; choose another name";
     }
-    std::filesystem::remove(probe, ec);
+    if (samePath(job.stats_file, job.dot_file) || (!job.stats_file.empty() && job.stats_file == job.dot_file))
+        return "--stats and --dot both name " + job.stats_file.string() + "; choose two names";
     return {};
 }
 
@@ -52,6 +75,7 @@ CaptureResult runCapture(const CaptureJob& job) {
                                                                             : job.stats_file.parent_path());
         if (!problem.empty()) return {fail(2, problem), {}, {}};
     }
+    if (std::string problem = checkCaptureOutputs(job); !problem.empty()) return {fail(2, problem), {}, {}};
     if (job.write_images && !job.force)
         for (int i = 0; i < c.frames; ++i)
             if (std::filesystem::exists(captureFileName(out, i, c.format)))
@@ -117,12 +141,13 @@ CaptureResult runCapture(const CaptureJob& job) {
         for (const auto& v : renderer.counters().collect()) stats.addCounter(v.frame, v.name, double(v.value));
         if (job.write_images) {
             std::filesystem::path file = captureFileName(out, frame, c.format);
-            std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
+            std::string problem = exr ? writeExr(file, c.width, c.height, hdr, job.force)
+                                      : writePng(file, c.width, c.height, ldr, job.force);
             if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
             result.images.push_back(file);
         }
         if (!dot.empty()) {
-            std::string problem = writeFileAtomic(job.dot_file, dot);
+            std::string problem = writeFileAtomic(job.dot_file, dot, job.force);
             if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
         }
         if (job.progress) progress.update(frame + 1);
@@ -132,7 +157,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     for (const auto& v : renderer.counters().collect(true)) stats.addCounter(v.frame, v.name, double(v.value));
 
     if (!job.stats_file.empty()) {
-        std::string problem = writeFileAtomic(job.stats_file, stats.json());
+        std::string problem = writeFileAtomic(job.stats_file, stats.json(), job.force);
         if (!problem.empty()) return {fail(1, problem), std::move(result.stats), result.images};
     }
     return result;

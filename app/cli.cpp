@@ -14,24 +14,42 @@
 #include "app/quality.h"
 #include "app/run_window.h"
 #include "app/scene.h"
+#include "app/scene_check.h"
 #include "terrain/gen_heightmap.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 
 namespace vista {
 namespace {
 
+std::string clipForMessage(const std::string& text);
+
+// One side of --size: decimal digits only, parsed without overflow (sscanf's %d wrapped
+// 4294967360 to 64).
+bool parseSide(std::string_view text, int& value) {
+    if (text.empty() || text.size() > 5) return false;
+    value = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9') return false;
+        value = value * 10 + (c - '0');
+    }
+    return true;
+}
+
 // --size WxH into width and height (unchanged on error); false with a message when malformed.
 bool parseSize(const std::string& size, int& width, int& height) {
+    const auto x = size.find_first_of("xX");
     int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-        w > 16384 || h > 16384) {
-        std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n", size.c_str());
+    if (x == std::string::npos || !parseSide(std::string_view(size).substr(0, x), w) ||
+        !parseSide(std::string_view(size).substr(x + 1), h) || w < 1 || h < 1 || w > 16384 || h > 16384) {
+        std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n",
+                     clipForMessage(size).c_str());
         return false;
     }
     width = w;
@@ -39,22 +57,60 @@ bool parseSize(const std::string& size, int& width, int& height) {
     return true;
 }
 
+// CLI11 reads "0x10" as 16 and "1e3" as 1000 for integers: options taking a count accept
+// plain decimal digits only.
+const CLI::Validator kDecimal(
+    [](std::string& text) -> std::string {
+        if (text.empty() || text.size() > 10 || text.find_first_not_of("0123456789") != std::string::npos)
+            return "'" + clipForMessage(text) + "' is not a decimal whole number";
+        return {};
+    },
+    "DECIMAL");
+
+// CLI::Range lets NaN through (every comparison with it is false): reals must be finite.
+const CLI::Validator kFinite(
+    [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
+            return "'" + clipForMessage(text) + "' is not a finite number";
+        return {};
+    },
+    "FINITE");
+
+// A value echoed in a message: at most 64 characters, so a 10 MB argument is not printed back.
+std::string clipForMessage(const std::string& text) {
+    return text.size() <= 64 ? text : text.substr(0, 61) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 
 struct SceneOptions {
-    std::string config;
+    std::vector<std::string> configs;  // -c may repeat: later files override earlier ones
     std::vector<std::string> overrides;
     std::string preset;
 
     void add(CLI::App* cmd) {
-        cmd->add_option("-c,--config", config, "scene file (default: config/default.ini)");
+        cmd->add_option("-c,--config", configs,
+                        "scene file (default: config/default.ini); may repeat: later files override earlier ones, "
+                        "e.g. -c config/default.ini -c config/presets/sunset.ini")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd->add_option("--set", overrides, "override a scene key: --set section.key=value (repeatable)");
         cmd->add_option("--preset", preset, "quality preset over the scene's knobs (--set still wins)")
             ->check(CLI::IsMember({"low", "medium", "high", "ultra", "reference"}));
     }
+    // The scene files in order (the default scene when none was given).
+    std::vector<std::filesystem::path> files() const {
+        if (configs.empty()) return {defaultScenePath()};
+        std::vector<std::filesystem::path> out;
+        for (const auto& c : configs) out.push_back(resolveInput(c));
+        return out;
+    }
+    // The last scene file: the one a window saves to, and the one named in messages.
+    std::filesystem::path file() const { return files().back(); }
     // Loads the scene; prints every problem and returns false on bad input.
     bool load(Settings& s) const {
-        std::filesystem::path file = config.empty() ? defaultScenePath() : resolveInput(config);
-        InputErrors errors = loadScene(file, overrides, s);
+        InputErrors errors = loadScene(files(), overrides, s);
         if (errors.empty() && !preset.empty()) {
             applyQualityPreset(s, *qualityPresetFromName(preset));
             for (const std::string& o : overrides) applyOverride(o, s);  // valid: loadScene took them
@@ -72,8 +128,8 @@ struct CaptureOptions {
 
     void add(CLI::App* cmd, bool images) {
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
-        cmd->add_option("--frames", frames, "number of frames (default: [capture] frames)")->check(CLI::Range(1, 1000000));
-        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--frames", frames, "number of frames (default: [capture] frames)")->check(kDecimal)->check(CLI::Range(1, 1000000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
         cmd->add_option("--size", size, "image size WxH, e.g. 320x180 (default: [capture] width x height)");
         cmd->add_option("--backend", backend, "GL context: osmesa (default), egl or glfw (hidden window)")
             ->check(CLI::IsMember({"osmesa", "egl", "glfw"}));
@@ -82,7 +138,7 @@ struct CaptureOptions {
         cmd->add_option("--format", format, "png (8-bit sRGB) or exr (linear half float)")->check(CLI::IsMember({"png", "exr"}));
         cmd->add_option("--stats", stats, "write per-pass timings and counters as JSON to this file");
         cmd->add_option("--dot", dot, "write the last frame's pass graph (Graphviz DOT; culled passes dashed)");
-        cmd->add_flag("--force", force, "overwrite existing images");
+        cmd->add_flag("--force", force, "overwrite existing images, --stats and --dot files");
     }
 
     // Applies the flags over [capture]; false (with a message) on a malformed --size.
@@ -108,6 +164,7 @@ int capture(const SceneOptions& scene, const CaptureOptions& opts) {
     job.dot_file = opts.dot;
     job.backend = opts.backendValue();
     job.force = opts.force;
+    job.inputs = scene.files();
     CaptureResult r = runCapture(job);
     if (r.exit_code == 0) {
         std::printf("vista: wrote %zu image(s) to %s/\n", r.images.size(), job.settings.capture.out.c_str());
@@ -122,12 +179,14 @@ struct QualityCliOptions {
     double fps = 0.0;
 
     void add(CLI::App* cmd, SceneOptions& scene) {
-        cmd->add_option("-c,--config", scene.config, "scene file (default: config/default.ini)");
+        cmd->add_option("-c,--config", scene.configs, "scene file (default: config/default.ini); may repeat")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd->add_option("--set", scene.overrides, "override a scene key: --set section.key=value (repeatable)");
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
-        cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(CLI::Range(1, 10000));
-        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(CLI::Range(0, 1000));
-        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(kDecimal)->check(CLI::Range(1, 10000));
+        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(kDecimal)->check(CLI::Range(0, 1000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
         cmd->add_option("--size", size, "image size WxH (default: [capture] width x height)");
         cmd->add_option("--out", out, "output directory (default: [capture] out/quality; the report files are replaced)");
         cmd->add_option("--backend", backend, "GL context: osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
@@ -142,7 +201,7 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
     if (!q.path.empty()) c.path = q.path;
     if (q.fps > 0.0) c.fps = float(q.fps);
     if (!q.size.empty() && !parseSize(q.size, c.width, c.height)) return 2;
-    o.scene_name = scene.config.empty() ? "config/default.ini" : scene.config;
+    o.scene_name = scene.configs.empty() ? "config/default.ini" : scene.configs.back();
     o.frames = q.frames;
     o.warmup = q.warmup;
     o.out = q.out.empty() ? std::filesystem::path(c.out) / "quality" : std::filesystem::path(q.out);
@@ -158,8 +217,13 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
 
 int check(const SceneOptions& scene) {
     Settings s;
-    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
-    InputErrors errors = loadScene(file, scene.overrides, s);
+    const std::filesystem::path file = scene.file();
+    InputErrors errors = loadScene(scene.files(), scene.overrides, s);
+    // Everything a capture validates before rendering, without a GL context.
+    if (errors.empty()) {
+        InputErrors more = validateSceneInputs(s);
+        errors.insert(errors.end(), more.begin(), more.end());
+    }
     CameraPath::load(resolveInput(s.capture.path), errors, s.camera.fov_deg);
     printErrors(errors);
     if (!errors.empty()) {
@@ -170,29 +234,32 @@ int check(const SceneOptions& scene) {
     return 0;
 }
 
-int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std::string& json, int warmup) {
+int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std::string& json, int warmup, bool force) {
     CaptureJob job;
     if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
     if (opts.frames == 0) job.settings.capture.frames = 16;
+    if (!json.empty())
+        if (std::string problem = checkOutputFile(json, force, "--json"); !problem.empty()) return fail(2, problem);
     job.backend = opts.backendValue();
     job.write_images = false;
     job.warmup_frames = warmup;
     CaptureResult r = runCapture(job);
     if (r.exit_code != 0) return r.exit_code;
     std::printf("%s", r.stats.table().c_str());
-    if (!json.empty()) {
-        std::string problem = writeFileAtomic(json, r.stats.json());
-        if (!problem.empty()) {
-            std::fprintf(stderr, "vista: %s\n", problem.c_str());
-            return 1;
-        }
-    }
-    return 0;
+    return writeBenchJson(json, r.stats.json(), force);
+}
+
+// A bench's --json checked before it runs (minutes may be at stake): 0 or 2 after saying why.
+int checkBenchJson(const std::filesystem::path& json, bool force) {
+    if (json.empty()) return 0;
+    std::string problem = checkOutputFile(json, force, "--json");
+    return problem.empty() ? 0 : fail(2, problem);
 }
 
 }  // namespace
 
-int runCli(int argc, char** argv) {
+// Parses and runs one command; runCli wraps it.
+int runCommand(int argc, char** argv) {
     CLI::App app{"vista: outdoor terrain renderer (OpenGL 4.5)"};
     app.require_subcommand(0, 1);
 
@@ -200,6 +267,7 @@ int runCli(int argc, char** argv) {
     CaptureOptions capture_opts, bench_opts;
     std::string bench_json;
     int bench_warmup = 2;
+    bool bench_force = false;
 
     CLI::App* run_cmd = app.add_subcommand("run", "open a window on the scene (the default)");
     run_scene.add(run_cmd);
@@ -214,7 +282,8 @@ int runCli(int argc, char** argv) {
     bench_scene.add(bench_frame);
     bench_opts.add(bench_frame, false);
     bench_frame->add_option("--json", bench_json, "also write the stats JSON to this file");
-    bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(CLI::Range(0, 1000));
+    bench_frame->add_flag("--force", bench_force, "replace an existing --json file");
+    bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(kDecimal)->check(CLI::Range(0, 1000));
 
     SceneOptions terrain_scene;
     BenchTerrainOptions terrain_opts;
@@ -223,11 +292,12 @@ int runCli(int argc, char** argv) {
     terrain_scene.add(bench_terrain);
     bench_terrain->add_option("--heightmap", terrain_heightmap, "heightmap file (default: generate an island of --size)");
     bench_terrain->add_option("--size", terrain_opts.size, "samples per side of the generated island, 2..16385")
-        ->check(CLI::Range(2, 16385));
-    bench_terrain->add_option("--poses", terrain_opts.poses, "random camera poses")->check(CLI::Range(1, 100000));
-    bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed");
+        ->check(kDecimal)->check(CLI::Range(2, 16385));
+    bench_terrain->add_option("--poses", terrain_opts.poses, "random camera poses")->check(kDecimal)->check(CLI::Range(1, 100000));
+    bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed")->check(kDecimal);
     bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
+    bench_terrain->add_flag("--force", terrain_opts.force, "replace an existing --json file");
 
     SceneOptions lights_scene;
     BenchLightsOptions lights_opts;
@@ -236,13 +306,14 @@ int runCli(int argc, char** argv) {
     CLI::App* bench_lights = bench_cmd->add_subcommand("lights", "light culling methods: GPU cost, evaluations against exact pairs, memory");
     lights_scene.add(bench_lights);
     bench_lights->add_option("--lights", lights_counts, "light counts, e.g. 0,64,256,1024,4096,16384 (the default)")
-        ->delimiter(',')->check(CLI::Range(0, 1000000));
+        ->delimiter(',')->check(kDecimal)->check(CLI::Range(0, 1000000));
     bench_lights->add_option("--methods", lights_methods, "comma-separated: naive,tiled,clustered,hashed (default: all)");
     bench_lights->add_option("--size", lights_size, "frame size WxH (default 320x180)");
-    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after three warm-up frames")->check(CLI::Range(1, 1000));
-    bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(CLI::Range(0.0f, 1.0e4f));
+    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after three warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
+    bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(kFinite)->check(CLI::Range(0.0f, 1.0e4f));
     bench_lights->add_option("--backend", lights_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_lights->add_option("--json", lights_json, "also write the results as JSON");
+    bench_lights->add_flag("--force", lights_opts.force, "replace an existing --json file");
 
     SceneOptions sky_scene;
     BenchSkyOptions sky_opts;
@@ -252,6 +323,7 @@ int runCli(int argc, char** argv) {
     bench_sky->add_option("--size", sky_size, "frame size for the timings, WxH (default 320x180)");
     bench_sky->add_option("--backend", sky_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_sky->add_option("--json", sky_json, "also write the results as JSON");
+    bench_sky->add_flag("--force", sky_opts.force, "replace an existing --json file");
 
     SceneOptions shadows_scene;
     BenchShadowsOptions shadows_opts;
@@ -263,6 +335,7 @@ int runCli(int argc, char** argv) {
     bench_shadows->add_option("--backend", shadows_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
+    bench_shadows->add_flag("--force", shadows_opts.force, "replace an existing --json file");
     SceneOptions grass_scene;
     BenchGrassOptions grass_opts;
     std::string grass_backend = "osmesa", grass_size, grass_json;
@@ -270,11 +343,12 @@ int runCli(int argc, char** argv) {
     CLI::App* bench_grass = bench_cmd->add_subcommand("grass", "grass passes: blades drawn and GPU cost at a few densities");
     grass_scene.add(bench_grass);
     bench_grass->add_option("--densities", grass_densities, "blades per m^2, e.g. 4,8,16,24,48 (the default)")
-        ->delimiter(',')->check(CLI::Range(0.25f, 400.0f));
+        ->delimiter(',')->check(kFinite)->check(CLI::Range(0.25f, 400.0f));
     bench_grass->add_option("--size", grass_size, "frame size WxH (default 640x360)");
-    bench_grass->add_option("--frames", grass_opts.frames, "timed frames per density, after two warm-up frames")->check(CLI::Range(1, 1000));
+    bench_grass->add_option("--frames", grass_opts.frames, "timed frames per density, after two warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
     bench_grass->add_option("--backend", grass_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_grass->add_option("--json", grass_json, "also write the results as JSON");
+    bench_grass->add_flag("--force", grass_opts.force, "replace an existing --json file");
 
     SceneOptions quality_scene;
     QualityCliOptions quality_opts;
@@ -286,9 +360,11 @@ int runCli(int argc, char** argv) {
     std::uint32_t gen_seed = 1;
     std::string gen_out;
     CLI::App* gen_cmd = app.add_subcommand("gen-heightmap", "generate a deterministic island heightmap (16-bit PNG or float EXR)");
-    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)");
-    gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere");
+    bool gen_force = false;
+    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)")->check(kDecimal);
+    gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
+    gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
 
     try {
         app.parse(argc, argv);
@@ -304,13 +380,14 @@ int runCli(int argc, char** argv) {
     if (*capture_cmd) return capture(capture_scene, capture_opts);
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
-    if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);
-    if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
+    if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
+    if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;
         if (!terrain_scene.load(s)) return 2;
         terrain_opts.heightmap = terrain_heightmap;
         terrain_opts.json = terrain_json;
+        if (int code = checkBenchJson(terrain_opts.json, terrain_opts.force)) return code;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchTerrain(s, terrain_opts);
     }
@@ -335,6 +412,7 @@ int runCli(int argc, char** argv) {
             }
         }
         lights_opts.json = lights_json;
+        if (int code = checkBenchJson(lights_opts.json, lights_opts.force)) return code;
         lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchLights(s, lights_opts);
     }
@@ -343,6 +421,7 @@ int runCli(int argc, char** argv) {
         if (!shadows_scene.load(s)) return 2;
         if (!shadows_size.empty() && !parseSize(shadows_size, shadows_opts.width, shadows_opts.height)) return 2;
         shadows_opts.json = shadows_json;
+        if (int code = checkBenchJson(shadows_opts.json, shadows_opts.force)) return code;
         shadows_opts.reference = !shadows_no_reference;
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(s, shadows_opts);
@@ -353,6 +432,7 @@ int runCli(int argc, char** argv) {
         if (!grass_size.empty() && !parseSize(grass_size, grass_opts.width, grass_opts.height)) return 2;
         if (!grass_densities.empty()) grass_opts.densities = grass_densities;
         grass_opts.json = grass_json;
+        if (int code = checkBenchJson(grass_opts.json, grass_opts.force)) return code;
         grass_opts.backend = grass_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchGrass(s, grass_opts);
     }
@@ -361,6 +441,7 @@ int runCli(int argc, char** argv) {
         if (!sky_scene.load(s)) return 2;
         if (!sky_size.empty() && !parseSize(sky_size, sky_opts.width, sky_opts.height)) return 2;
         sky_opts.json = sky_json;
+        if (int code = checkBenchJson(sky_opts.json, sky_opts.force)) return code;
         sky_opts.backend = sky_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchSky(s, sky_opts);
     }
@@ -374,7 +455,10 @@ int runCli(int argc, char** argv) {
         if (!scene.load(s)) return 2;
         // Never overwrite an earlier capture: use the next free out/run-NNN when out/ is taken.
         std::filesystem::path out = s.capture.out;
-        for (int n = 2; std::filesystem::exists(captureFileName(out, 0, s.capture.format)); ++n) {
+        // A regular file named like a run folder is skipped too, not retried forever.
+        for (int n = 2; std::filesystem::exists(captureFileName(out, 0, s.capture.format)) ||
+                        (std::filesystem::exists(out) && !std::filesystem::is_directory(out));
+             ++n) {
             char name[16];
             std::snprintf(name, sizeof name, "run-%03d", n);
             out = std::filesystem::path(s.capture.out) / name;
@@ -384,8 +468,21 @@ int runCli(int argc, char** argv) {
     }
     Settings s;
     if (!scene.load(s)) return 2;
-    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
-    return runWindow(s, file);
+    return runWindow(s, scene.file());
+}
+
+int runCli(int argc, char** argv) {
+    installTemporaryCleanup();
+    // A GL allocation failure (incomplete framebuffer) or std::bad_alloc under a memory limit
+    // is a runtime failure with a message (exit 1), never an abort (exit 134).
+    try {
+        return runCommand(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "vista: out of memory (std::bad_alloc); try a smaller --size or fewer/smaller resources\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vista: runtime failure: %s\n", e.what());
+    }
+    return 1;
 }
 
 }  // namespace vista

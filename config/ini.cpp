@@ -2,6 +2,7 @@
 // knows about keys, types and ranges goes through describe() with three visitors: one
 // collects the names, one applies a value, one writes the file.
 #include "config/ini.h"
+#include "config/file_io.h"
 
 #include <ini.h>
 
@@ -449,14 +450,10 @@ InputErrors loadIniString(std::string_view text, const std::string& name, Settin
 }
 
 InputErrors loadIniFile(const std::filesystem::path& file, Settings& s) {
-    std::FILE* f = std::fopen(file.c_str(), "rb");
-    if (!f) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(errno)}};
+    // Regular files under a size limit only: a FIFO or /dev/zero is refused, not read forever.
     std::string text;
-    char buf[4096];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
-    const int err = std::ferror(f) ? errno : 0;  // a directory opens but fails to read
-    std::fclose(f);
-    if (err) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(err)}};
+    std::string problem = readInputFile(file, kMaxTextInputBytes, text);
+    if (!problem.empty()) return {{file.string(), 0, problem.substr(std::min(problem.size(), file.string().size() + 2))}};
     return loadIniString(text, file.string(), s);
 }
 
@@ -500,23 +497,8 @@ std::string saveIniString(Settings& s) {
 }
 
 std::string saveIniFile(const std::filesystem::path& file, Settings& s) {
-    const std::string text = saveIniString(s);
-    std::filesystem::path temp = file;
-    temp += ".tmp";
-    const auto fail = [&](int err) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        return "cannot write " + file.string() + ": " + std::strerror(err);
-    };
-    std::FILE* f = std::fopen(temp.c_str(), "wb");
-    if (!f) return fail(errno);
-    const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    const int err = errno;
-    if (std::fclose(f) != 0) return fail(errno);
-    if (!written) return fail(err);
-    std::error_code ec;
-    std::filesystem::rename(temp, file, ec);
-    return ec ? fail(ec.value()) : "";
+    // The panel's "save" replaces the scene on purpose; writeFileAtomic checks every write.
+    return writeFileAtomic(file, saveIniString(s), /*force=*/true);
 }
 
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates) {
