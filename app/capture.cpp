@@ -5,6 +5,7 @@
 #include "app/camera_path.h"
 #include "app/frame.h"
 #include "app/image_writer.h"
+#include "app/memory_budget.h"
 #include "app/progress.h"
 #include "app/scene.h"
 
@@ -82,6 +83,7 @@ CaptureResult runCapture(const CaptureJob& job) {
                 return {fail(2, captureFileName(out, i, c.format).string() +
                                     " already exists; pass --force to overwrite, or choose another --out"), {}, {}};
 
+    if (std::string problem = checkFrameMemory(c.width, c.height); !problem.empty()) return {fail(1, problem), {}, {}};
     std::string error;
     ContextOptions options{c.width, c.height, /*visible=*/false, false, false, s.window.gl_debug, "vista capture"};
     auto context = createContext(job.backend, options, error);

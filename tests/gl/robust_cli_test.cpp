@@ -16,8 +16,9 @@ struct Run {
     std::string output;  // stdout and stderr
 };
 
-Run run(const std::string& args) {
-    std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + VISTA_EXECUTABLE + " " + args + " 2>&1";
+// Runs a shell command line, collecting its output and exit code.
+Run shell(const std::string& line) {
+    std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + line + " 2>&1";
     Run r{-1, {}};
     FILE* pipe = popen(cmd.c_str(), "r");
     REQUIRE(pipe);
@@ -27,6 +28,8 @@ Run run(const std::string& args) {
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
+
+Run run(const std::string& args) { return shell(std::string(VISTA_EXECUTABLE) + " " + args); }
 
 bool has(const Run& r, const std::string& text) { return r.output.find(text) != std::string::npos; }
 
@@ -122,4 +125,38 @@ TEST_CASE("gl: -c repeats, later scene files overriding earlier ones") {
     // A preset over the default scene keeps the default scene's sea.
     Run preset = run("check -c config/default.ini -c config/presets/sunset.ini");
     CHECK(preset.code == 0);
+}
+
+TEST_CASE("gl: a full disk, SIGTERM and a memory limit during a capture leave no partial output") {
+    vista::test::TempDir dir("robust-faults");
+    const std::string out = (dir.path / "frames").string();
+    const auto leftovers = [&] {
+        int n = 0;
+        if (std::filesystem::exists(out))
+            for (const auto& e : std::filesystem::directory_iterator(out)) n += e.path().extension() == ".part";
+        return n;
+    };
+    // A disk full after 3000 bytes (RLIMIT_FSIZE): was exit 0, "wrote 3 image(s)", truncated frames.
+    Run full = shell("prlimit --fsize=3000 " + std::string(VISTA_EXECUTABLE) + " capture --size 160x90 --frames 3 --out " + out);
+    CHECK(full.code == 1);
+    CHECK(has(full, "File too large"));
+    CHECK_FALSE(std::filesystem::exists(std::filesystem::path(out) / "frame_0000.png"));
+    CHECK(leftovers() == 0);
+
+    // SIGTERM in the middle of a long capture: frames already written stay, no *.part.
+    const std::string cmd = std::string(VISTA_EXECUTABLE) + " capture --size 64x36 --frames 100000 --force --out " + out +
+                            " >/dev/null 2>&1 & pid=$!; sleep 4; kill -TERM $pid; wait $pid; echo $?";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    REQUIRE(pipe);
+    char status[32] = {};
+    REQUIRE(std::fgets(status, sizeof status, pipe));
+    pclose(pipe);
+    CHECK(std::string(status) == "143\n");  // died of SIGTERM (128 + 15)
+    CHECK(leftovers() == 0);
+
+    // A frame that cannot fit the address space: a message and exit 1, not a crash in Mesa.
+    Run big = shell("bash -c 'ulimit -v 2000000; exec " + std::string(VISTA_EXECUTABLE) +
+                    " capture --size 8192x8192 --frames 1 --out " + out + "-big'");
+    CHECK(big.code == 1);
+    CHECK(has(big, "--size 8192x8192 needs about"));
 }
