@@ -213,7 +213,7 @@ bool samePath(const std::filesystem::path& a, const std::filesystem::path& b) {
 std::string inputFileProblem(const std::filesystem::path& file, std::uintmax_t max_bytes) {
     struct stat st {};
     if (::stat(file.c_str(), &st) != 0) return std::string("cannot be opened: ") + std::strerror(errno);
-    if (S_ISDIR(st.st_mode)) return "cannot be opened: it is a directory; accepted: a regular file";
+    if (S_ISDIR(st.st_mode)) return std::string("cannot be opened: ") + std::strerror(EISDIR) + "; accepted: a regular file";
     if (!S_ISREG(st.st_mode)) return "cannot be opened: not a regular file (a FIFO, device or socket); accepted: regular files";
     if (std::uintmax_t(st.st_size) > max_bytes)
         return "cannot be opened: it is " + std::to_string(std::uintmax_t(st.st_size)) + " bytes; accepted: at most " +

@@ -43,10 +43,11 @@ constexpr double kHeightLimitM = 100000.0;
 bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, const std::string& file, InputErrors& errors);
 
 // Writes a 16-bit single-channel PNG of values clamped to [0, 1], atomically (config/file_io.h);
-// force: replace an existing file. "" on success, else why.
-std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map, bool force = false);
+// force: replace an existing file (the default for library callers such as tests that
+// regenerate a map; `vista gen-heightmap` passes its --force). "" on success, else why.
+std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map, bool force = true);
 // Writes a single-channel float EXR ("Y") the same way.
-std::string saveHeightmapExr(const std::filesystem::path& file, const Heightmap& map, bool force = false);
+std::string saveHeightmapExr(const std::filesystem::path& file, const Heightmap& map, bool force = true);
 
 struct IslandParams {
     int size = 1025;          // samples per side (any size >= 2; 2^n + 1 suits the quadtree)
