@@ -79,7 +79,7 @@ int runBenchGrass(const BenchScene& isolated, const BenchGrassOptions& o) {
                           {"reference_copy_ms", copy_ms},
                           {"rows", rows}};
     out["scene"] = isolated.json();
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

@@ -17,6 +17,7 @@ struct BenchGrassOptions {
     int frames = 5;                   // timed frames per density, after two warm-up frames
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;       // empty: table only
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // Returns the exit code.

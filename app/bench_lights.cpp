@@ -491,7 +491,7 @@ int runBenchLights(const BenchScene& isolated, const BenchLightsOptions& o) {
                               {"renderer", context->renderer()},
                               {"backend", backendName(o.backend)}};
         out["scene"] = isolated.json();
-        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n");
+        std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n", o.force);
         if (!problem.empty()) return fail(1, problem);
     }
     return chart_problem.empty() ? 0 : 1;

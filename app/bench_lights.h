@@ -33,6 +33,7 @@ struct BenchLightsOptions {
     int sweep_lights = 1024;          // light count of every sweep but counts
     int path_frames = 16;             // frames of the path sweep
     std::filesystem::path charts;     // PNG charts go here (one per sweep); empty: beside --json, or none
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // The sweep names bench lights accepts, in the order it runs them.

@@ -20,6 +20,7 @@ struct BenchShadowsOptions {
     Backend backend = Backend::OSMesa;
     bool reference = true;          // the 8192-texel reference (slow on llvmpipe): off skips error_vs_reference
     std::filesystem::path json;     // empty: tables only
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // Returns the exit code.

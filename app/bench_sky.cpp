@@ -224,7 +224,7 @@ int runBenchSky(const BenchScene& isolated, const BenchSkyOptions& o) {
     };
     std::printf("reference_copy_ms %.4f\n", copy_ms);
     out["scene"] = isolated.json();
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

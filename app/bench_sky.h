@@ -19,6 +19,7 @@ struct BenchSkyOptions {
     std::vector<std::string> presets;  // LUT presets to measure (low, medium, default, high); empty: all
     bool clouds = true;             // also the cloud octave/step sweep
     int psnr_width = 128, psnr_height = 72;  // views compared with the CPU reference (~0.1 ms a pixel on the CPU)
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // The LUT presets bench sky knows, in order.

@@ -164,7 +164,7 @@ int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
         std::printf("%-32s %s\n", it.key().c_str(), value.c_str());
     }
     out["scene"] = isolated.json();
-    return writeBenchJson(o.json, out.dump(2) + "\n");
+    return writeBenchJson(o.json, out.dump(2) + "\n", o.force);
 }
 
 }  // namespace vista

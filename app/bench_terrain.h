@@ -21,6 +21,7 @@ struct BenchTerrainOptions {
     std::uint32_t seed = 1;           // island and poses
     Backend backend = Backend::OSMesa;
     std::filesystem::path json;       // empty: table only
+    bool force = false;  // --force: replace an existing --json file
 };
 
 // Returns the exit code.

@@ -8,6 +8,7 @@
 // yaw on values unwrapped along the shortest arc. End keys use the zero-curvature
 // ("natural") condition: the second derivative is zero at the first and last key.
 #include "app/camera_path.h"
+#include "config/file_io.h"
 
 #include <glm/geometric.hpp>
 
@@ -20,6 +21,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -118,6 +120,10 @@ CameraPath::CameraPath(std::vector<CameraKey> keys) : keys_(std::move(keys)) {
     keys_.erase(std::unique(keys_.begin(), keys_.end(), same_time), keys_.end());
 }
 
+// Keys written 0.001 s apart differ by a rounded 0.001 (0.301 - 0.3 < 0.001 in binary), so the
+// minimum step is compared with a tolerance of a few ulps of the time.
+static double stepTolerance(double t) { return 1e-9 + 8.0 * std::numeric_limits<double>::epsilon() * std::abs(t); }
+
 CameraPath CameraPath::parse(std::string_view text, const std::string& name, InputErrors& errors,
                              double default_fov_deg) {
     std::vector<CameraKey> keys;
@@ -128,6 +134,9 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& name, Inp
     int key_lines = 0;
     int line_no = 0;
     auto report = [&](std::string message) { errors.push_back({name, line_no, std::move(message)}); };
+    // A UTF-8 byte order mark (editors on Windows add one) is not a field: it was reported as
+    // an invisible "t is not a number".
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
 
     for (std::size_t pos = 0; pos < text.size();) {
         std::size_t end = text.find('\n', pos);
@@ -167,7 +176,7 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& name, Inp
         if (std::abs(v[0]) > kMaxTime) {
             report("t " + format(v[0]) + " is outside -1e12..1e12 seconds");
             ok = false;
-        } else if (previous_t && v[0] < *previous_t + kMinStep) {
+        } else if (previous_t && (v[0] <= *previous_t || v[0] - *previous_t < kMinStep - stepTolerance(v[0]))) {
             report("time " + format(v[0]) + " must be greater than the previous key's time " + format(*previous_t) +
                    " (times increase strictly, by at least 0.001 s)");
             ok = false;
@@ -206,20 +215,13 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& name, Inp
 }
 
 CameraPath CameraPath::load(const std::filesystem::path& file, InputErrors& errors, double default_fov_deg) {
-    auto fail = [&](int err) {
-        errors.push_back({file.string(), 0, std::string("cannot read camera path: ") + std::strerror(err)});
+    // Regular files under a size limit only: a FIFO blocked forever and /dev/zero filled memory.
+    std::string text;
+    if (std::string why = readInputFile(file, kMaxTextInputBytes, text); !why.empty()) {
+        errors.push_back({file.string(), 0, "camera path " + why.substr(std::min(why.size(), file.string().size() + 2))});
         return CameraPath();
-    };
-    // A directory opens as a stream and reads as empty, so it would pass for a short file.
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) return fail(EISDIR);
-    errno = 0;
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return fail(errno != 0 ? errno : EIO);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return fail(errno != 0 ? errno : EIO);
-    return parse(text.str(), file.string(), errors, default_fov_deg);
+    }
+    return parse(text, file.string(), errors, default_fov_deg);
 }
 
 double CameraPath::startTime() const { return keys_.empty() ? 0.0 : keys_.front().t; }

@@ -6,6 +6,7 @@
 #include "app/camera_path.h"
 #include "app/frame.h"
 #include "app/image_writer.h"
+#include "app/memory_budget.h"
 #include "app/progress.h"
 #include "app/scene.h"
 #include "app/video.h"
@@ -13,7 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <unistd.h>
 
 namespace vista {
 
@@ -27,12 +28,35 @@ std::string checkWritableDir(const std::filesystem::path& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return dir.string() + ": cannot create output directory (" + ec.message() + ")";
-    std::filesystem::path probe = dir / ".vista-write-test";
-    {
-        std::ofstream out(probe);
-        if (!out) return dir.string() + ": output directory is not writable";
+    // access(), not a probe file: a fixed probe name would race with a second capture.
+    if (!std::filesystem::is_directory(dir, ec)) return dir.string() + ": is not a directory";
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) return dir.string() + ": output directory is not writable";
+    return {};
+}
+
+std::string checkCaptureOutputs(const CaptureJob& job) {
+    const CaptureSettings& c = job.settings.capture;
+    std::vector<std::filesystem::path> inputs = job.inputs;
+    inputs.push_back(resolveInput(c.path));
+    inputs.push_back(resolveInput(job.settings.terrain.heightmap));
+    if (!job.settings.grade.lut.empty()) inputs.push_back(resolveInput(job.settings.grade.lut));
+    const std::pair<const char*, const std::filesystem::path*> outputs[] = {{"--stats", &job.stats_file},
+                                                                            {"--dot", &job.dot_file}};
+    for (const auto& [option, file] : outputs) {
+        if (file->empty()) continue;
+        std::string problem = checkOutputFile(*file, job.force, option);
+        if (!problem.empty()) return problem;
+        for (const auto& input : inputs)
+            if (samePath(*file, input))
+                return std::string(option) + " " + file->string() + ": is an input of this capture; choose another name";
+        std::filesystem::path dir = file->parent_path().empty() ? std::filesystem::path(".") : file->parent_path();
+        const std::string frame_ext = c.format == ImageFormat::Exr ? ".exr" : ".png";
+        if (job.write_images && samePath(dir, c.out) && file->filename().string().rfind("frame_", 0) == 0 &&
+            file->extension() == frame_ext)
+            return std::string(option) + " " + file->string() + ": would replace a captured frame; choose another name";
     }
-    std::filesystem::remove(probe, ec);
+    if (samePath(job.stats_file, job.dot_file) || (!job.stats_file.empty() && job.stats_file == job.dot_file))
+        return "--stats and --dot both name " + job.stats_file.string() + "; choose two names";
     return {};
 }
 
@@ -143,7 +167,9 @@ CaptureResult runCapture(const CaptureJob& job) {
         if (whole_video && std::filesystem::exists(video_file))
             return stop(2, video_file.string() + " already exists; pass --force to replace it, or choose another --out");
     }
+    if (std::string problem = checkCaptureOutputs(job); !problem.empty()) return stop(2, problem);
 
+    if (std::string problem = checkFrameMemory(c.width, c.height); !problem.empty()) return {fail(1, problem), {}, {}};
     std::string error;
     ContextOptions options{c.width, c.height, /*visible=*/false, false, false, s.window.gl_debug, "vista capture"};
     auto context = createContext(job.backend, options, error);
@@ -194,6 +220,8 @@ CaptureResult runCapture(const CaptureJob& job) {
             if (stats.frames().count(v.frame)) stats.addCounter(v.frame, v.name, double(v.value));  // not settle frames'
     };
 
+    // A resumed run re-renders frames whose files its manifest no longer vouches for.
+    const bool replace = job.force || job.resume;
     Progress progress(int(todo.size()), job.write_images ? "capture" : "bench");
     const std::vector<FrameSpan> runs = consecutiveRuns(todo);
     const int settle = job.write_images ? c.settle_frames : job.warmup_frames;
@@ -220,7 +248,8 @@ CaptureResult runCapture(const CaptureJob& job) {
             flushStats(false);
             if (job.write_images) {
                 std::filesystem::path file = captureFileName(out, frame, file_format);
-                std::string problem = exr ? writeExr(file, c.width, c.height, hdr) : writePng(file, c.width, c.height, ldr);
+                std::string problem = exr ? writeExr(file, c.width, c.height, hdr, replace)
+                                      : writePng(file, c.width, c.height, ldr, replace);
                 std::optional<std::string> sum = problem.empty() ? fileChecksum(file) : std::nullopt;
                 if (problem.empty() && !sum) problem = file.string() + ": cannot read back the image just written";
                 if (!problem.empty()) return stop(1, problem);
@@ -231,11 +260,11 @@ CaptureResult runCapture(const CaptureJob& job) {
                                                         [](const auto& a, const auto& b) { return a.index < b.index; }),
                                        entry);
                 // After every frame: a run killed at any point leaves a manifest of what it finished.
-                problem = writeFileAtomic(manifest_file, manifest.json());
+                problem = writeFileAtomic(manifest_file, manifest.json(), /*force=*/true);  // this run's own file
                 if (!problem.empty()) return stop(1, problem);
             }
             if (request.graph_dot) {
-                std::string problem = writeFileAtomic(job.dot_file, dot);
+                std::string problem = writeFileAtomic(job.dot_file, dot, job.force);
                 if (!problem.empty()) return stop(1, problem);
             }
             if (job.progress) progress.update(++done);
@@ -247,7 +276,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     if (job.write_images) {
         manifest.complete = true;
         manifest.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
-        if (std::string problem = writeFileAtomic(manifest_file, manifest.json()); !problem.empty())
+        if (std::string problem = writeFileAtomic(manifest_file, manifest.json(), /*force=*/true); !problem.empty())
             return stop(1, problem);
         result.manifest = manifest_file;
         if (whole_video) {
@@ -259,7 +288,7 @@ CaptureResult runCapture(const CaptureJob& job) {
         }
     }
     if (!job.stats_file.empty()) {
-        std::string problem = writeFileAtomic(job.stats_file, stats.json());
+        std::string problem = writeFileAtomic(job.stats_file, stats.json(), job.force);
         if (!problem.empty()) return stop(1, problem);
     }
     return result;

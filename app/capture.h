@@ -18,7 +18,8 @@ struct CaptureJob {
     std::filesystem::path stats_file; // empty: no stats file
     std::filesystem::path dot_file;   // empty: none; else the last frame's graph (Graphviz)
     Backend backend = Backend::OSMesa;
-    bool force = false;               // overwrite existing images
+    bool force = false;               // overwrite existing images, stats and DOT files
+    std::vector<std::filesystem::path> inputs;  // scene files: no output may name one
     bool write_images = true;         // false for benchmarks
     int warmup_frames = 0;            // rendered first, not recorded
     bool progress = true;
@@ -47,8 +48,12 @@ CaptureResult runCapture(const CaptureJob& job);
 // start).
 double captureFrameTime(double start_s, int frame, double fps);
 
-// Creates dir if needed and proves it writable with a probe file: "" or the reason.
+// Creates dir if needed and checks it is a writable directory: "" or the reason.
 std::string checkWritableDir(const std::filesystem::path& dir);
+
+// Checks --stats and --dot before rendering: each is a file name in a writable folder, not
+// existing without force, and none names another output, a frame or an input. "" or why.
+std::string checkCaptureOutputs(const CaptureJob& job);
 
 // The image file for frame i: out/frame_0000.png.
 std::filesystem::path captureFileName(const std::filesystem::path& out, int frame, ImageFormat format);

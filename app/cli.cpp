@@ -16,26 +16,44 @@
 #include "app/quality.h"
 #include "app/run_window.h"
 #include "app/scene.h"
+#include "app/scene_check.h"
 #include "terrain/gen_heightmap.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 
 namespace vista {
 namespace {
 
+std::string clipForMessage(const std::string& text);
+
+// One side of --size: decimal digits only, parsed without overflow (sscanf's %d wrapped
+// 4294967360 to 64).
+bool parseSide(std::string_view text, int& value) {
+    if (text.empty() || text.size() > 5) return false;
+    value = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9') return false;
+        value = value * 10 + (c - '0');
+    }
+    return true;
+}
+
 // --size WxH into width and height (unchanged on error); false with a message when malformed.
 bool parseSize(const std::string& size, int& width, int& height) {
+    const auto x = size.find_first_of("xX");
     int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-        w > 16384 || h > 16384) {
-        std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n", size.c_str());
+    if (x == std::string::npos || !parseSide(std::string_view(size).substr(0, x), w) ||
+        !parseSide(std::string_view(size).substr(x + 1), h) || w < 1 || h < 1 || w > 16384 || h > 16384) {
+        std::fprintf(stderr, "vista: --size %s: expected WxH with each side 1..16384, e.g. 320x180\n",
+                     clipForMessage(size).c_str());
         return false;
     }
     width = w;
@@ -43,22 +61,60 @@ bool parseSize(const std::string& size, int& width, int& height) {
     return true;
 }
 
+// CLI11 reads "0x10" as 16 and "1e3" as 1000 for integers: options taking a count accept
+// plain decimal digits only.
+const CLI::Validator kDecimal(
+    [](std::string& text) -> std::string {
+        if (text.empty() || text.size() > 10 || text.find_first_not_of("0123456789") != std::string::npos)
+            return "'" + clipForMessage(text) + "' is not a decimal whole number";
+        return {};
+    },
+    "DECIMAL");
+
+// CLI::Range lets NaN through (every comparison with it is false): reals must be finite.
+const CLI::Validator kFinite(
+    [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(v))
+            return "'" + clipForMessage(text) + "' is not a finite number";
+        return {};
+    },
+    "FINITE");
+
+// A value echoed in a message: at most 64 characters, so a 10 MB argument is not printed back.
+std::string clipForMessage(const std::string& text) {
+    return text.size() <= 64 ? text : text.substr(0, 61) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 
 struct SceneOptions {
-    std::string config;
+    std::vector<std::string> configs;  // -c may repeat: later files override earlier ones
     std::vector<std::string> overrides;
     std::string preset;
 
     void add(CLI::App* cmd) {
-        cmd->add_option("-c,--config", config, "scene file (default: config/default.ini)");
+        cmd->add_option("-c,--config", configs,
+                        "scene file (default: config/default.ini); may repeat: later files override earlier ones, "
+                        "e.g. -c config/default.ini -c config/presets/sunset.ini")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd->add_option("--set", overrides, "override a scene key: --set section.key=value (repeatable)");
         cmd->add_option("--preset", preset, "quality preset over the scene's knobs (--set still wins)")
             ->check(CLI::IsMember({"low", "medium", "high", "ultra", "reference"}));
     }
+    // The scene files in order (the default scene when none was given).
+    std::vector<std::filesystem::path> files() const {
+        if (configs.empty()) return {defaultScenePath()};
+        std::vector<std::filesystem::path> out;
+        for (const auto& c : configs) out.push_back(resolveInput(c));
+        return out;
+    }
+    // The last scene file: the one a window saves to, and the one named in messages.
+    std::filesystem::path file() const { return files().back(); }
     // Loads the scene; prints every problem and returns false on bad input.
     bool load(Settings& s) const {
-        std::filesystem::path file = config.empty() ? defaultScenePath() : resolveInput(config);
-        InputErrors errors = loadScene(file, overrides, s);
+        InputErrors errors = loadScene(files(), overrides, s);
         if (errors.empty() && !preset.empty()) {
             applyQualityPreset(s, *qualityPresetFromName(preset));
             for (const std::string& o : overrides) applyOverride(o, s);  // valid: loadScene took them
@@ -78,8 +134,8 @@ struct CaptureOptions {
 
     void add(CLI::App* cmd, bool images) {
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
-        cmd->add_option("--frames", frames, "number of frames (default: [capture] frames)")->check(CLI::Range(1, 1000000));
-        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--frames", frames, "number of frames (default: [capture] frames)")->check(kDecimal)->check(CLI::Range(1, 1000000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
         cmd->add_option("--size", size, "image size WxH, e.g. 320x180 (default: [capture] width x height)");
         cmd->add_option("--backend", backend, "GL context: osmesa (default), egl or glfw (hidden window)")
             ->check(CLI::IsMember({"osmesa", "egl", "glfw"}));
@@ -89,7 +145,7 @@ struct CaptureOptions {
             ->check(CLI::IsMember({"png", "exr", "mp4"}));
         cmd->add_option("--stats", stats, "write per-pass timings and counters as JSON to this file");
         cmd->add_option("--dot", dot, "write the last frame's pass graph (Graphviz DOT; culled passes dashed)");
-        cmd->add_flag("--force", force, "overwrite existing images");
+        cmd->add_flag("--force", force, "overwrite existing images, --stats and --dot files");
         cmd->add_option("--shard", shard, "render shard K of N (K from 0) of the selected frames: contiguous blocks");
         cmd->add_option("--frames-range", frames_range, "render frames A..B-1 of the path's frames only");
         cmd->add_flag("--resume", resume, "keep the frames whose files match this run's manifest; render the rest");
@@ -128,6 +184,7 @@ int capture(const SceneOptions& scene, const CaptureOptions& opts) {
     job.backend = opts.backendValue();
     job.force = opts.force;
     job.resume = opts.resume;
+    job.inputs = scene.files();
     CaptureResult r = runCapture(job);
     if (r.exit_code == 0) {
         std::printf("vista: wrote %zu image(s) to %s/ (%d kept from an earlier run, %d settle frames)\n", r.images.size(),
@@ -145,12 +202,14 @@ struct QualityCliOptions {
     double fps = 0.0;
 
     void add(CLI::App* cmd, SceneOptions& scene) {
-        cmd->add_option("-c,--config", scene.config, "scene file (default: config/default.ini)");
+        cmd->add_option("-c,--config", scene.configs, "scene file (default: config/default.ini); may repeat")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd->add_option("--set", scene.overrides, "override a scene key: --set section.key=value (repeatable)");
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
-        cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(CLI::Range(1, 10000));
-        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(CLI::Range(0, 1000));
-        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(kDecimal)->check(CLI::Range(1, 10000));
+        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(kDecimal)->check(CLI::Range(0, 1000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
         cmd->add_option("--size", size, "image size WxH (default: [capture] width x height)");
         cmd->add_option("--out", out, "output directory (default: [capture] out/quality; the report files are replaced)");
         cmd->add_option("--backend", backend, "GL context: osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
@@ -165,7 +224,7 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
     if (!q.path.empty()) c.path = q.path;
     if (q.fps > 0.0) c.fps = float(q.fps);
     if (!q.size.empty() && !parseSize(q.size, c.width, c.height)) return 2;
-    o.scene_name = scene.config.empty() ? "config/default.ini" : scene.config;
+    o.scene_name = scene.configs.empty() ? "config/default.ini" : scene.configs.back();
     o.frames = q.frames;
     o.warmup = q.warmup;
     o.out = q.out.empty() ? std::filesystem::path(c.out) / "quality" : std::filesystem::path(q.out);
@@ -181,8 +240,13 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
 
 int check(const SceneOptions& scene) {
     Settings s;
-    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
-    InputErrors errors = loadScene(file, scene.overrides, s);
+    const std::filesystem::path file = scene.file();
+    InputErrors errors = loadScene(scene.files(), scene.overrides, s);
+    // Everything a capture validates before rendering, without a GL context.
+    if (errors.empty()) {
+        InputErrors more = validateSceneInputs(s);
+        errors.insert(errors.end(), more.begin(), more.end());
+    }
     CameraPath::load(resolveInput(s.capture.path), errors, s.camera.fov_deg);
     printErrors(errors);
     if (!errors.empty()) {
@@ -193,16 +257,18 @@ int check(const SceneOptions& scene) {
     return 0;
 }
 
-int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std::string& json, int warmup) {
+int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std::string& json, int warmup, bool force) {
     CaptureJob job;
     if (!scene.load(job.settings) || !opts.apply(job.settings.capture)) return 2;
     if (opts.frames == 0) job.settings.capture.frames = 16;
+    if (!json.empty())
+        if (std::string problem = checkOutputFile(json, force, "--json"); !problem.empty()) return fail(2, problem);
     job.backend = opts.backendValue();
     job.write_images = false;
     job.warmup_frames = warmup;
     // What bench frame measures is the scene as given: it states the scene instead of isolating.
     BenchScene stated{"frame", enabledSections(job.settings), {}, {}, scene.overrides, job.settings};
-    std::printf("bench frame: scene %s, as given: features on [", scene.config.empty() ? "config/default.ini" : scene.config.c_str());
+    std::printf("bench frame: scene %s, as given: features on [", scene.configs.empty() ? "config/default.ini" : scene.configs.back().c_str());
     for (std::size_t i = 0; i < stated.kept.size(); ++i) std::printf("%s%s", i ? ", " : "", stated.kept[i].c_str());
     std::printf("]; --set [");
     for (std::size_t i = 0; i < stated.user.size(); ++i) std::printf("%s%s", i ? ", " : "", stated.user[i].c_str());
@@ -216,8 +282,8 @@ int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std:
     if (!json.empty()) {
         nlohmann::json doc = nlohmann::json::parse(st.json());
         doc["scene"] = stated.json();
-        doc["scene"]["file"] = scene.config.empty() ? "config/default.ini" : scene.config;
-        std::string problem = writeFileAtomic(json, doc.dump(2) + "\n");
+        doc["scene"]["file"] = scene.configs.empty() ? "config/default.ini" : scene.configs.back();
+        std::string problem = writeFileAtomic(json, doc.dump(2) + "\n", force);
         if (!problem.empty()) {
             std::fprintf(stderr, "vista: %s\n", problem.c_str());
             return 1;
@@ -226,9 +292,17 @@ int benchFrame(const SceneOptions& scene, const CaptureOptions& opts, const std:
     return 0;
 }
 
+// A bench's --json checked before it runs (minutes may be at stake): 0 or 2 after saying why.
+int checkBenchJson(const std::filesystem::path& json, bool force) {
+    if (json.empty()) return 0;
+    std::string problem = checkOutputFile(json, force, "--json");
+    return problem.empty() ? 0 : fail(2, problem);
+}
+
 }  // namespace
 
-int runCli(int argc, char** argv) {
+// Parses and runs one command; runCli wraps it.
+int runCommand(int argc, char** argv) {
     CLI::App app{"vista: outdoor terrain renderer (OpenGL 4.5)"};
     app.require_subcommand(0, 1);
 
@@ -236,6 +310,7 @@ int runCli(int argc, char** argv) {
     CaptureOptions capture_opts, bench_opts;
     std::string bench_json;
     int bench_warmup = 2;
+    bool bench_force = false;
 
     CLI::App* run_cmd = app.add_subcommand("run", "open a window on the scene (the default)");
     run_scene.add(run_cmd);
@@ -250,7 +325,8 @@ int runCli(int argc, char** argv) {
     bench_scene.add(bench_frame);
     bench_opts.add(bench_frame, false);
     bench_frame->add_option("--json", bench_json, "also write the stats JSON to this file");
-    bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(CLI::Range(0, 1000));
+    bench_frame->add_flag("--force", bench_force, "replace an existing --json file");
+    bench_frame->add_option("--warmup", bench_warmup, "frames rendered before measuring")->check(kDecimal)->check(CLI::Range(0, 1000));
 
     SceneOptions terrain_scene;
     BenchTerrainOptions terrain_opts;
@@ -259,13 +335,14 @@ int runCli(int argc, char** argv) {
     terrain_scene.add(bench_terrain);
     bench_terrain->add_option("--heightmap", terrain_heightmap, "heightmap file (default: generate an island of --size)");
     bench_terrain->add_option("--size", terrain_opts.size, "samples per side of the generated island, 2..16385")
-        ->check(CLI::Range(2, 16385));
-    bench_terrain->add_option("--poses", terrain_opts.poses, "random camera poses")->check(CLI::Range(1, 100000));
-    bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed");
+        ->check(kDecimal)->check(CLI::Range(2, 16385));
+    bench_terrain->add_option("--poses", terrain_opts.poses, "random camera poses")->check(kDecimal)->check(CLI::Range(1, 100000));
+    bench_terrain->add_option("--seed", terrain_opts.seed, "island and pose seed")->check(kDecimal);
     bench_terrain->add_option("--backend", terrain_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_terrain->add_option("--json", terrain_json, "also write the results as JSON");
     std::string terrain_frame_size;
     bench_terrain->add_option("--frame-size", terrain_frame_size, "frame size WxH of the poses (default 640x360)");
+    bench_terrain->add_flag("--force", terrain_opts.force, "replace an existing --json file");
 
     SceneOptions lights_scene;
     BenchLightsOptions lights_opts;
@@ -274,11 +351,11 @@ int runCli(int argc, char** argv) {
     CLI::App* bench_lights = bench_cmd->add_subcommand("lights", "light culling methods: GPU cost, evaluations against exact pairs, memory");
     lights_scene.add(bench_lights);
     bench_lights->add_option("--lights", lights_counts, "light counts, e.g. 0,64,256,1024,4096,16384 (the default)")
-        ->delimiter(',')->check(CLI::Range(0, 1000000));
+        ->delimiter(',')->check(kDecimal)->check(CLI::Range(0, 1000000));
     bench_lights->add_option("--methods", lights_methods, "comma-separated: naive,tiled,clustered,hashed (default: all)");
     bench_lights->add_option("--size", lights_size, "frame size WxH (default 320x180)");
-    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after three warm-up frames")->check(CLI::Range(1, 1000));
-    bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(CLI::Range(0.0f, 1.0e4f));
+    bench_lights->add_option("--frames", lights_opts.frames, "timed frames per row, after three warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
+    bench_lights->add_option("--radius", lights_opts.radius_m, "radius of every light (m)")->check(kFinite)->check(CLI::Range(0.0f, 1.0e4f));
     bench_lights->add_option("--backend", lights_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_lights->add_option("--json", lights_json, "also write the results as JSON");
     std::string lights_sweeps, lights_resolutions;
@@ -290,6 +367,7 @@ int runCli(int argc, char** argv) {
     bench_lights->add_option("--path-frames", lights_opts.path_frames, "frames of the path sweep (default 16)")->check(CLI::Range(1, 10000));
     std::string lights_charts;
     bench_lights->add_option("--charts", lights_charts, "directory for the PNG charts (default: beside --json)");
+    bench_lights->add_flag("--force", lights_opts.force, "replace an existing --json file");
 
     SceneOptions sky_scene;
     BenchSkyOptions sky_opts;
@@ -305,6 +383,7 @@ int runCli(int argc, char** argv) {
     std::string sky_psnr_size;
     bench_sky->add_option("--psnr-size", sky_psnr_size, "size of the views compared with the CPU reference, WxH (default 128x72)");
     bench_sky->add_flag("--no-clouds", sky_no_clouds, "skip the cloud octave/step sweep");
+    bench_sky->add_flag("--force", sky_opts.force, "replace an existing --json file");
 
     SceneOptions shadows_scene;
     BenchShadowsOptions shadows_opts;
@@ -316,6 +395,7 @@ int runCli(int argc, char** argv) {
     bench_shadows->add_option("--backend", shadows_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
+    bench_shadows->add_flag("--force", shadows_opts.force, "replace an existing --json file");
     SceneOptions grass_scene;
     BenchGrassOptions grass_opts;
     std::string grass_backend = "osmesa", grass_size, grass_json;
@@ -323,11 +403,12 @@ int runCli(int argc, char** argv) {
     CLI::App* bench_grass = bench_cmd->add_subcommand("grass", "grass passes: blades drawn and GPU cost at a few densities");
     grass_scene.add(bench_grass);
     bench_grass->add_option("--densities", grass_densities, "blades per m^2, e.g. 4,8,16,24,48 (the default)")
-        ->delimiter(',')->check(CLI::Range(0.25f, 400.0f));
+        ->delimiter(',')->check(kFinite)->check(CLI::Range(0.25f, 400.0f));
     bench_grass->add_option("--size", grass_size, "frame size WxH (default 640x360)");
-    bench_grass->add_option("--frames", grass_opts.frames, "timed frames per density, after two warm-up frames")->check(CLI::Range(1, 1000));
+    bench_grass->add_option("--frames", grass_opts.frames, "timed frames per density, after two warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
     bench_grass->add_option("--backend", grass_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
     bench_grass->add_option("--json", grass_json, "also write the results as JSON");
+    bench_grass->add_flag("--force", grass_opts.force, "replace an existing --json file");
 
     SceneOptions quality_scene;
     QualityCliOptions quality_opts;
@@ -370,9 +451,11 @@ int runCli(int argc, char** argv) {
     std::uint32_t gen_seed = 1;
     std::string gen_out;
     CLI::App* gen_cmd = app.add_subcommand("gen-heightmap", "generate a deterministic island heightmap (16-bit PNG or float EXR)");
-    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)");
-    gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere");
+    bool gen_force = false;
+    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)")->check(kDecimal);
+    gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
+    gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
 
     try {
         app.parse(argc, argv);
@@ -391,14 +474,15 @@ int runCli(int argc, char** argv) {
     if (*slurm_cmd) return runFarmSlurm(slurm_opts);
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
-    if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out);
-    if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup);
+    if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
+    if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;
         if (!terrain_scene.load(s)) return 2;
         terrain_opts.heightmap = terrain_heightmap;
         terrain_opts.json = terrain_json;
         if (!terrain_frame_size.empty() && !parseSize(terrain_frame_size, terrain_opts.width, terrain_opts.height)) return 2;
+        if (int code = checkBenchJson(terrain_opts.json, terrain_opts.force)) return code;
         terrain_opts.backend = terrain_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchTerrain(isolateBenchScene("terrain", s, benchKeptSections("terrain"), benchFixedKeys("terrain"), terrain_scene.overrides),
                               terrain_opts);
@@ -448,6 +532,7 @@ int runCli(int argc, char** argv) {
                 lights_opts.resolutions.push_back({w, h});
             }
         }
+        if (int code = checkBenchJson(lights_opts.json, lights_opts.force)) return code;
         lights_opts.backend = lights_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchLights(isolateBenchScene("lights", s, benchKeptSections("lights"), benchFixedKeys("lights"), lights_scene.overrides),
                               lights_opts);
@@ -457,6 +542,7 @@ int runCli(int argc, char** argv) {
         if (!shadows_scene.load(s)) return 2;
         if (!shadows_size.empty() && !parseSize(shadows_size, shadows_opts.width, shadows_opts.height)) return 2;
         shadows_opts.json = shadows_json;
+        if (int code = checkBenchJson(shadows_opts.json, shadows_opts.force)) return code;
         shadows_opts.reference = !shadows_no_reference;
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(isolateBenchScene("shadows", s, benchKeptSections("shadows"), benchFixedKeys("shadows"), shadows_scene.overrides),
@@ -468,6 +554,7 @@ int runCli(int argc, char** argv) {
         if (!grass_size.empty() && !parseSize(grass_size, grass_opts.width, grass_opts.height)) return 2;
         if (!grass_densities.empty()) grass_opts.densities = grass_densities;
         grass_opts.json = grass_json;
+        if (int code = checkBenchJson(grass_opts.json, grass_opts.force)) return code;
         grass_opts.backend = grass_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchGrass(isolateBenchScene("grass", s, benchKeptSections("grass"), benchFixedKeys("grass"), grass_scene.overrides),
                               grass_opts);
@@ -479,6 +566,7 @@ int runCli(int argc, char** argv) {
         sky_opts.json = sky_json;
         sky_opts.clouds = !sky_no_clouds;
         if (!sky_psnr_size.empty() && !parseSize(sky_psnr_size, sky_opts.psnr_width, sky_opts.psnr_height)) return 2;
+        if (int code = checkBenchJson(sky_opts.json, sky_opts.force)) return code;
         sky_opts.backend = sky_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchSky(isolateBenchScene("sky", s, benchKeptSections("sky"), benchFixedKeys("sky"), sky_scene.overrides),
                               sky_opts);
@@ -493,7 +581,10 @@ int runCli(int argc, char** argv) {
         if (!scene.load(s)) return 2;
         // Never overwrite an earlier capture: use the next free out/run-NNN when out/ is taken.
         std::filesystem::path out = s.capture.out;
-        for (int n = 2; std::filesystem::exists(captureFileName(out, 0, s.capture.format)); ++n) {
+        // A regular file named like a run folder is skipped too, not retried forever.
+        for (int n = 2; std::filesystem::exists(captureFileName(out, 0, s.capture.format)) ||
+                        (std::filesystem::exists(out) && !std::filesystem::is_directory(out));
+             ++n) {
             char name[16];
             std::snprintf(name, sizeof name, "run-%03d", n);
             out = std::filesystem::path(s.capture.out) / name;
@@ -503,8 +594,21 @@ int runCli(int argc, char** argv) {
     }
     Settings s;
     if (!scene.load(s)) return 2;
-    std::filesystem::path file = scene.config.empty() ? defaultScenePath() : resolveInput(scene.config);
-    return runWindow(s, file);
+    return runWindow(s, scene.file());
+}
+
+int runCli(int argc, char** argv) {
+    installTemporaryCleanup();
+    // A GL allocation failure (incomplete framebuffer) or std::bad_alloc under a memory limit
+    // is a runtime failure with a message (exit 1), never an abort (exit 134).
+    try {
+        return runCommand(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "vista: out of memory (std::bad_alloc); try a smaller --size or fewer/smaller resources\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vista: runtime failure: %s\n", e.what());
+    }
+    return 1;
 }
 
 }  // namespace vista

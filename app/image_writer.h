@@ -1,7 +1,9 @@
-// Capture images through OpenImageIO: PNG (8-bit sRGB) or EXR (linear half float),
-// written to a temporary name and renamed, so an interrupted capture never leaves a
-// truncated image under a final name.
+// Capture images through OpenImageIO: PNG (8-bit sRGB) or EXR (linear half float), encoded
+// in memory and written with writeFileAtomic (config/file_io.h): every write and the close
+// are checked, and only a complete image ever appears under its final name.
 #pragma once
+
+#include "config/file_io.h"  // writeFileAtomic, AtomicWriter
 
 #include <cstdint>
 #include <filesystem>
@@ -10,9 +12,12 @@
 
 namespace vista {
 
-// rgba: width*height*4 bytes, top row first. Alpha is dropped. "" on success, else why.
-std::string writePng(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba);
+// rgba: width*height*4 bytes, top row first. Alpha is dropped. force: replace an existing
+// file (else one that appeared since the start is refused). "" on success, else why.
+std::string writePng(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba,
+                     bool force);
 // rgba: width*height*4 half floats, top row first. Alpha is dropped.
-std::string writeExr(const std::filesystem::path& file, int width, int height, const std::vector<std::uint16_t>& rgba);
+std::string writeExr(const std::filesystem::path& file, int width, int height, const std::vector<std::uint16_t>& rgba,
+                     bool force);
 
 }  // namespace vista

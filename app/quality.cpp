@@ -111,6 +111,7 @@ int runQuality(const QualityOptions& o) {
     report.height = c.height;
     report.frames = o.frames;
     report.warmup = o.warmup;
+    report.planned_runs = int(runs.size());
 
     Frames ref;
     std::vector<unsigned char> ldr;

@@ -4,6 +4,7 @@
 
 #include "app/chart.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -77,8 +78,15 @@ const char* kMetricRule = "---:|---:|---:|---:|---:|---:|---:|---:|:---:|---:|";
 
 }  // namespace
 
+std::string QualityReport::incompleteNote() const {
+    return "INCOMPLETE: " + std::to_string(runs.size()) + " of " + std::to_string(planned_runs) +
+           " runs measured (vista quality is still running or was interrupted)";
+}
+
 std::string qualityCsv(const QualityReport& r) {
-    std::string out =
+    // An incomplete report starts with a comment line, so no reader mistakes it for the whole.
+    std::string out = r.complete() ? std::string() : "# " + r.incompleteNote() + "\n";
+    out +=
         "name,kind,knob,value,psnr_ldr_db,ssim_ldr,max_err_ldr,psnr_hdr_db,ssim_hdr,max_err_hdr_stops,gpu_ms_median,"
         "cpu_ms_median,reference_copy_ms,copies,pareto,front_gap_db\n";
     for (const QualityRun& run : r.runs) {
@@ -92,7 +100,8 @@ std::string qualityCsv(const QualityReport& r) {
 }
 
 std::string qualityPassesCsv(const QualityReport& r) {
-    std::string out = "name,pass,gpu_ms,cpu_ms,copies\n";
+    std::string out = r.complete() ? std::string() : "# " + r.incompleteNote() + "\n";
+    out += "name,pass,gpu_ms,cpu_ms,copies\n";
     for (const QualityRun& run : r.runs)
         for (const PassSummary& p : run.passes)
             out += run.name + "," + p.name + "," + fmt("%.4f", p.gpu_ms) + "," + fmt("%.4f", p.cpu_ms) + "," +
@@ -102,6 +111,7 @@ std::string qualityPassesCsv(const QualityReport& r) {
 
 std::string qualityMarkdown(const QualityReport& r, bool chart_has_labels) {
     std::string md = "# vista quality\n\n";
+    if (!r.complete()) md += "> **" + r.incompleteNote() + "**\n\n";
     md += "Scene `" + r.scene + "`, camera path `" + r.path + "`, " + std::to_string(r.frames) + " frame(s) at " +
           std::to_string(r.width) + "x" + std::to_string(r.height) + " after " + std::to_string(r.warmup) +
           " warm-up frame(s); " + r.renderer + " (" + r.backend + ", " + r.gpu_timer + " timer).\n\n";
@@ -234,6 +244,10 @@ std::string writeQualityChart(const std::filesystem::path& file, const QualityRe
          "vista quality: final image PSNR against GPU time, " + std::to_string(r.width) + "x" + std::to_string(r.height) +
              ", " + std::to_string(r.frames) + " frame(s), " + r.renderer,
          15, black);
+    if (!r.complete()) {
+        static const float red[3] = {0.8f, 0.0f, 0.0f};
+        text(ax.x0 + 60, 44, r.incompleteNote(), 15, red);
+    }
 
     // Knob runs, the front, then the presets on top.
     for (const QualityRun& run : r.runs)
@@ -259,13 +273,18 @@ std::string writeQualityChart(const std::filesystem::path& file, const QualityRe
         }
     text(ax.x1 - 8, ax.y1 - 10, "grey: one knob from the reference; line: Pareto front", 13, grey, IBA::TextAlignX::Right);
 
-    std::filesystem::path tmp = file;
-    tmp += ".part";
-    if (!img.write(tmp.string(), OIIO::TypeDesc::UINT8, "png")) return file.string() + ": " + img.geterror();
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) return file.string() + ": cannot rename from " + tmp.string() + " (" + ec.message() + ")";
-    return {};
+    // Encoded in memory and written atomically, so a full disk is a reported error.
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out) return file.string() + ": OpenImageIO has no png writer (" + OIIO::geterror() + ")";
+    out->set_ioproxy(&memory);
+    OIIO::ImageSpec spec = img.spec();
+    spec.set_format(OIIO::TypeDesc::UINT8);
+    bool ok = out->open(file.string(), spec) && img.write(out.get());
+    ok = out->close() && ok;
+    if (!ok) return file.string() + ": " + (out->geterror().empty() ? img.geterror() : out->geterror());
+    return writeFileAtomic(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), true);
 }
 
 std::string writeQualityReport(const std::filesystem::path& dir, const QualityReport& r) {
@@ -273,10 +292,11 @@ std::string writeQualityReport(const std::filesystem::path& dir, const QualityRe
     std::filesystem::create_directories(dir, ec);
     if (ec) return dir.string() + ": cannot create output directory (" + ec.message() + ")";
     bool labels = false;
-    for (std::string problem : {writeFileAtomic(dir / "quality.csv", qualityCsv(r)),
-                                writeFileAtomic(dir / "quality_passes.csv", qualityPassesCsv(r)),
+    // The report files are replaced on purpose (--out's help says so): force.
+    for (std::string problem : {writeFileAtomic(dir / "quality.csv", qualityCsv(r), true),
+                                writeFileAtomic(dir / "quality_passes.csv", qualityPassesCsv(r), true),
                                 writeQualityChart(dir / "quality.png", r, labels),
-                                writeFileAtomic(dir / "quality.md", qualityMarkdown(r, labels))})
+                                writeFileAtomic(dir / "quality.md", qualityMarkdown(r, labels), true)})
         if (!problem.empty()) return problem;
     return {};
 }

@@ -35,6 +35,12 @@ struct QualityReport {
     std::vector<QualityRun> runs;            // presets first (reference among them), then knobs in table order
     std::vector<std::string> inactive_knobs;  // knobs whose feature the scene does not use (no runs)
     std::vector<std::string> knob_order;     // knob names with runs, in table order
+    int planned_runs = 0;                    // runs this report will hold; fewer: it is marked incomplete
+
+    // False while runs are missing: the files written after each run say so, and a killed
+    // `vista quality` leaves them saying so.
+    bool complete() const { return int(runs.size()) >= planned_runs; }
+    std::string incompleteNote() const;  // "INCOMPLETE: 3 of 40 runs measured (...)"
 };
 
 // Which points are on the Pareto front when both cost and error are minimised: no other point

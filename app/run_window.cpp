@@ -92,7 +92,8 @@ void screenshot(int width, int height) {
     std::error_code ec;
     std::filesystem::create_directories("out", ec);
     std::filesystem::path file = std::filesystem::path("out") / name;
-    std::string problem = writePng(file, width, height, rgba);
+    // Two screenshots in one second: the second is refused rather than replacing the first.
+    std::string problem = writePng(file, width, height, rgba, /*force=*/false);
     std::fprintf(stderr, "vista: %s\n", problem.empty() ? ("screenshot saved to " + file.string()).c_str() : problem.c_str());
 }
 

@@ -22,8 +22,17 @@ std::filesystem::path resolveInput(const std::filesystem::path& path) {
 std::filesystem::path defaultScenePath() { return vistaRoot() / "config/default.ini"; }
 
 InputErrors loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides, Settings& s) {
+    return loadScene(std::vector<std::filesystem::path>{file}, overrides, s);
+}
+
+InputErrors loadScene(const std::vector<std::filesystem::path>& files, const std::vector<std::string>& overrides,
+                      Settings& s) {
     s = Settings{};
-    InputErrors errors = loadIniFile(file, s);
+    InputErrors errors;
+    for (const auto& file : files) {
+        InputErrors e = loadIniFile(file, s);
+        errors.insert(errors.end(), e.begin(), e.end());
+    }
     for (const auto& o : overrides) {
         InputErrors e = applyOverride(o, s);
         errors.insert(errors.end(), e.begin(), e.end());

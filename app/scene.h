@@ -23,6 +23,9 @@ std::filesystem::path defaultScenePath();
 
 // Fills s from defaults, file and overrides, collecting every problem.
 InputErrors loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides, Settings& s);
+// The same for several scene files (`-c` repeated): each later file overrides the earlier ones.
+InputErrors loadScene(const std::vector<std::filesystem::path>& files, const std::vector<std::string>& overrides,
+                      Settings& s);
 
 // Prints errors, one per line, to stderr.
 void printErrors(const InputErrors& errors);

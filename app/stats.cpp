@@ -126,9 +126,9 @@ int fail(int code, const std::string& message) {
     return code;
 }
 
-int writeBenchJson(const std::filesystem::path& file, const std::string& text) {
+int writeBenchJson(const std::filesystem::path& file, const std::string& text, bool force) {
     if (file.empty()) return 0;
-    std::string problem = writeFileAtomic(file, text);
+    std::string problem = writeFileAtomic(file, text, force);
     return problem.empty() ? 0 : fail(1, problem);
 }
 
@@ -136,21 +136,6 @@ double passMs(const FrameTiming& t, const std::string& name) {
     for (const auto& p : t.passes)
         if (p.name == name) return p.gpu_ms;
     return 0.0;
-}
-
-std::string writeFileAtomic(const std::filesystem::path& file, const std::string& text) {
-    std::filesystem::path tmp = file;
-    tmp += ".part";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return file.string() + ": cannot write (" + std::strerror(errno) + ")";
-        out << text;
-        if (!out.flush()) return file.string() + ": write failed";
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) return file.string() + ": cannot rename from " + tmp.string() + " (" + ec.message() + ")";
-    return {};
 }
 
 }  // namespace vista

@@ -3,6 +3,8 @@
 // per-pass GPU/CPU times and counters, and medians.
 #pragma once
 
+#include "config/file_io.h"  // writeFileAtomic
+
 #include "renderer/pass_timers.h"
 
 #include <cstdint>
@@ -59,13 +61,11 @@ private:
 
 double median(std::vector<double> values);
 
-// Writes text to file through a temporary name and a rename. "" on success, else why.
-std::string writeFileAtomic(const std::filesystem::path& file, const std::string& text);
-
 // Prints "vista: message" to stderr and returns code (the command's exit code).
 int fail(int code, const std::string& message);
 // A bench's --json output: writes text to file unless file is empty; 0, or 1 after saying why.
-int writeBenchJson(const std::filesystem::path& file, const std::string& text);
+// force (--force): replace an existing file; the CLI refused one before the bench ran.
+int writeBenchJson(const std::filesystem::path& file, const std::string& text, bool force);
 // GPU ms of the pass called name in a frame's timings (0 when it did not run).
 double passMs(const FrameTiming& t, const std::string& name);
 

@@ -2,6 +2,7 @@
 // knows about keys, types and ranges goes through describe() with three visitors: one
 // collects the names, one applies a value, one writes the file.
 #include "config/ini.h"
+#include "config/file_io.h"
 
 #include <ini.h>
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <unordered_set>
 #include <limits>
 #include <map>
 #include <optional>
@@ -27,6 +29,14 @@ char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned 
 
 bool iequals(std::string_view a, std::string_view b) {
     return std::ranges::equal(a, b, {}, lower, lower);
+}
+
+constexpr std::size_t kMaxListedProblems = 100;
+
+// A value quoted in a message: one over 1 KiB (a 10 MB value) is cut, saying how long it was.
+std::string clipValue(std::string_view text) {
+    if (text.size() <= 1024) return std::string(text);
+    return std::string(text.substr(0, 100)) + "... (" + std::to_string(text.size()) + " characters)";
 }
 
 std::string_view trim(std::string_view t) {
@@ -215,8 +225,9 @@ public:
 // Sets the one field [section] key from text, or says why not.
 class Applier final : public Visitor<Applier> {
 public:
-    Applier(std::string_view section, std::string_view key, std::string_view text)
-        : section_(section), key_(key), text_(text) {}
+    // known_new: the caller knows a list entry of this name does not exist yet (append).
+    Applier(std::string_view section, std::string_view key, std::string_view text, bool known_new = false)
+        : section_(section), key_(key), text_(text), knownNew_(known_new) {}
     std::string error;
 
     void section(const char* name, const char*) override { inSection_ = section_ == name; }
@@ -225,7 +236,7 @@ public:
         if (!inSection_ || key_ != i.key) return;
         if (const std::string why = parse(text_, v, limits...); !why.empty()) {
             const std::string unit = *i.unit ? std::string(" (") + i.unit + ")" : "";
-            error = "[" + std::string(section_) + "] " + i.key + " = " + std::string(text_) + " " + why +
+            error = "[" + std::string(section_) + "] " + i.key + " = " + clipValue(text_) + " " + why +
                     "; accepted: " + accepted(v, limits...) + unit;
         }
     }
@@ -237,13 +248,30 @@ public:
         if (!isValidListName(name))
             error = key + ": the name '" + std::string(name) + "' is not accepted; accepted: " + i.key +
                     ".NAME with NAME made of letters, digits and _";
-        else if (const std::string why = list.set(name, text_); !why.empty())
-            error = key + " = " + std::string(text_) + " is not accepted: " + why;
+        else if (const std::string why = knownNew_ ? list.append(name, text_) : list.set(name, text_); !why.empty())
+            error = key + " = " + clipValue(text_) + " is not accepted: " + why;
     }
 
 private:
     std::string_view section_, key_, text_;
+    bool knownNew_ = false;
     bool inSection_ = false;
+};
+
+// The names of the list entries settings already hold ("section\nprefix.name"), so a load
+// knows which of its entries are new without searching the lists.
+class ListNames final : public Visitor<ListNames> {
+public:
+    std::unordered_set<std::string> names;
+    void section(const char* name, const char*) override { section_ = name; }
+    template <class T, class... L>
+    void visit(const FieldInfo&, T&, const L&...) {}
+    void visitList(const FieldInfo& i, ListField& list) {
+        for (std::size_t e = 0; e < list.size(); ++e) names.insert(section_ + "\n" + i.key + "." + list.name(e));
+    }
+
+private:
+    std::string section_;
 };
 
 class Writer final : public Visitor<Writer> {
@@ -314,6 +342,9 @@ public:
     Loader(std::string_view text, const std::string& file, Settings& s)
         : text_(text), file_(file), settings_(s), sections_(collectNames(s)) {
         if (text_.starts_with("\xEF\xBB\xBF")) text_.remove_prefix(3);
+        ListNames existing;
+        describe(existing, settings_);
+        existing_ = std::move(existing.names);
     }
 
     InputErrors run() && {
@@ -323,6 +354,9 @@ public:
         if (first > 0 && std::ranges::none_of(errors_, [&](const InputError& e) { return e.line == first; }))
             error(first, "cannot be parsed");
         std::ranges::stable_sort(errors_, {}, &InputError::line);
+        if (unlisted_ > 0)
+            errors_.push_back({file_, 0, "and " + std::to_string(unlisted_) + " more problem(s) not listed (the first " +
+                                             std::to_string(kMaxListedProblems) + " are)"});
         return std::move(errors_);
     }
 
@@ -346,6 +380,11 @@ private:
         }
         line = trim(line);
         l.longValue_.reset();
+        if (line.find('\0') != line.npos) {
+            // inih reads C strings: a NUL would cut the value short without a word.
+            l.error(l.line_, "contains a NUL byte; accepted: text without NUL bytes");
+            line = {};
+        }
         if (line.size() + 2 > size_t(size) && !line.starts_with('[')) {
             // inih takes at most size - 2 characters a line, but values (a list entry far from the
             // origin, a long path) may be longer: inih gets "key =" and onKey the value kept here.
@@ -409,7 +448,9 @@ private:
         if (const auto [it, fresh] = seen_.try_emplace(section->name + "\n" + key, line_); !fresh)
             return error(line_, name + " is set twice, on lines " + std::to_string(it->second) + " and " +
                                     std::to_string(line_) + "; the second is ignored");
-        Applier apply(section->name, key, value);
+        // Fresh in this file (seen_ above) and not held before it: a list entry can be appended.
+        const bool known_new = !listPrefix(key).empty() && !existing_.contains(section->name + "\n" + key);
+        Applier apply(section->name, key, value, known_new);
         describe(apply, settings_);
         if (!apply.error.empty()) error(line_, apply.error);
     }
@@ -427,7 +468,15 @@ private:
         return unknown(what, guess.empty() ? "" : guess + key.substr(prefix.size()), acceptedKeys(section));
     }
 
-    void error(int line, std::string message) { errors_.push_back({file_, line, std::move(message)}); }
+    // At most kMaxListedProblems are kept (2,000,000 unknown keys printed 2 M lines and took
+    // 1 GB); the rest are counted and reported as one line at the end.
+    void error(int line, std::string message) {
+        if (errors_.size() >= kMaxListedProblems) {
+            ++unlisted_;
+            return;
+        }
+        errors_.push_back({file_, line, std::move(message)});
+    }
 
     std::string_view text_;  // not read yet
     const std::string& file_;
@@ -440,6 +489,8 @@ private:
     std::optional<std::string> longValue_;  // value of the current line when inih gets only its key
     std::optional<std::string> section_;  // none before the first header
     std::map<std::string, int> seen_;     // "section\nkey" -> line
+    std::unordered_set<std::string> existing_;  // list entries held before this file
+    std::size_t unlisted_ = 0;                  // problems beyond kMaxListedProblems
 };
 
 }  // namespace
@@ -449,14 +500,10 @@ InputErrors loadIniString(std::string_view text, const std::string& name, Settin
 }
 
 InputErrors loadIniFile(const std::filesystem::path& file, Settings& s) {
-    std::FILE* f = std::fopen(file.c_str(), "rb");
-    if (!f) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(errno)}};
+    // Regular files under a size limit only: a FIFO or /dev/zero is refused, not read forever.
     std::string text;
-    char buf[4096];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
-    const int err = std::ferror(f) ? errno : 0;  // a directory opens but fails to read
-    std::fclose(f);
-    if (err) return {{file.string(), 0, std::string("cannot be opened: ") + std::strerror(err)}};
+    std::string problem = readInputFile(file, kMaxTextInputBytes, text);
+    if (!problem.empty()) return {{file.string(), 0, problem.substr(std::min(problem.size(), file.string().size() + 2))}};
     return loadIniString(text, file.string(), s);
 }
 
@@ -500,23 +547,8 @@ std::string saveIniString(Settings& s) {
 }
 
 std::string saveIniFile(const std::filesystem::path& file, Settings& s) {
-    const std::string text = saveIniString(s);
-    std::filesystem::path temp = file;
-    temp += ".tmp";
-    const auto fail = [&](int err) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        return "cannot write " + file.string() + ": " + std::strerror(err);
-    };
-    std::FILE* f = std::fopen(temp.c_str(), "wb");
-    if (!f) return fail(errno);
-    const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    const int err = errno;
-    if (std::fclose(f) != 0) return fail(errno);
-    if (!written) return fail(err);
-    std::error_code ec;
-    std::filesystem::rename(temp, file, ec);
-    return ec ? fail(ec.value()) : "";
+    // The panel's "save" replaces the scene on purpose; writeFileAtomic checks every write.
+    return writeFileAtomic(file, saveIniString(s), /*force=*/true);
 }
 
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates) {

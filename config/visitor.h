@@ -43,6 +43,9 @@ public:
     // Empty on success, otherwise why text is not accepted (the bad token and what is accepted);
     // the list is then unchanged. The caller checks the name with isValidListName().
     virtual std::string set(std::string_view name, std::string_view text) = 0;
+    // set() for a name the caller knows is not in the list: appends without searching, so a
+    // file of n entries loads in O(n), not O(n^2) (300,000 lights took minutes).
+    virtual std::string append(std::string_view name, std::string_view text) { return set(name, text); }
     virtual void erase(std::size_t i) = 0;
     // Text of an entry with every value at its default (what an editor adds).
     virtual std::string defaultText() const = 0;
@@ -112,10 +115,13 @@ public:
     std::size_t size() const override { return entries_.size(); }
     const std::string& name(std::size_t i) const override { return entries_[i].name; }
     std::string text(std::size_t i) const override { return format_(entries_[i].*value_); }
-    std::string set(std::string_view name, std::string_view text) override {
+    std::string set(std::string_view name, std::string_view text) override { return put(name, text, true); }
+    std::string append(std::string_view name, std::string_view text) override { return put(name, text, false); }
+    std::string put(std::string_view name, std::string_view text, bool search) {
         Value v{};  // groups the text omits take the defaults, not the old entry's values
         if (std::string why = parse_(text, v); !why.empty()) return why;
         for (Entry& e : entries_) {
+            if (!search) break;
             if (e.name == name) {
                 e.*value_ = std::move(v);
                 return {};

@@ -1,6 +1,7 @@
 // .cube parsing: keywords and data lines may come in any order the format allows (keywords
 // first); comments (#) and blank lines are skipped; 1D LUTs are refused with a message.
 #include "postfx/lut.h"
+#include "config/file_io.h"
 
 #include <charconv>
 #include <cmath>
@@ -84,14 +85,17 @@ std::optional<CubeLut> parseCube(std::string_view text, const std::string& file,
 }
 
 std::optional<CubeLut> loadCube(const std::filesystem::path& path, InputErrors& errors) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    // Regular files under the text limit only: /dev/zero or a FIFO is refused, not read forever.
+    std::string text;
+    if (std::string why = inputFileProblem(path, kMaxTextInputBytes); !why.empty()) {
+        errors.push_back({path.string(), 0, why + " ([postfx.grade] lut)"});
+        return std::nullopt;
+    }
+    if (std::string why = readInputFile(path, kMaxTextInputBytes, text); !why.empty()) {
         errors.push_back({path.string(), 0, "cannot read the LUT file ([postfx.grade] lut)"});
         return std::nullopt;
     }
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseCube(text.str(), path.string(), errors);
+    return parseCube(text, path.string(), errors);
 }
 
 gl::Texture uploadCube(const CubeLut& lut, std::string_view name) {

@@ -3,6 +3,7 @@
 #include "terrain/gen_heightmap.h"
 
 #include "terrain/heightmap.h"
+#include "config/file_io.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -15,53 +16,30 @@
 namespace vista {
 namespace {
 
-// Single-channel float EXR, written under a temporary name and renamed like every output.
-std::string saveHeightmapExr(const std::filesystem::path& file, const Heightmap& map) {
-    std::filesystem::path tmp = file;
-    tmp += ".part";
-    auto out = OIIO::ImageOutput::create("openexr");
-    if (!out) return file.string() + ": OpenImageIO has no openexr writer (" + OIIO::geterror() + ")";
-    OIIO::ImageSpec spec(map.width, map.height, 1, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"Y"};
-    spec.attribute("compression", "zip");
-    if (!out->open(tmp.string(), spec)) return file.string() + ": " + out->geterror();
-    bool ok = out->write_image(OIIO::TypeDesc::FLOAT, map.samples.data());
-    ok = out->close() && ok;
-    if (!ok) {
-        std::filesystem::remove(tmp);
-        return file.string() + ": " + out->geterror();
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) return file.string() + ": cannot rename from " + tmp.string() + " (" + ec.message() + ")";
-    return {};
-}
-
-int fail(const std::string& why) {
+int fail(const std::string& why, int code = 2) {
     std::fprintf(stderr, "vista: %s\n", why.c_str());
-    return 2;
+    return code;
 }
 
 }  // namespace
 
-int runGenHeightmap(int size, std::uint32_t seed, const std::filesystem::path& out) {
+int runGenHeightmap(int size, std::uint32_t seed, const std::filesystem::path& out, bool force) {
     if (size < 2 || size > 16385) return fail("--size " + std::to_string(size) + " is out of range; accepted: 2..16385");
     std::string ext = out.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (ext != ".png" && ext != ".exr")
         return fail(out.string() + ": unknown heightmap format \"" + ext + "\"; accepted: .png (16-bit), .exr (float)");
-    // Catch a missing output directory before spending seconds generating.
-    std::filesystem::path dir = out.parent_path().empty() ? std::filesystem::path(".") : out.parent_path();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-        return fail(out.string() + ": output directory " + dir.string() + " does not exist");
+    // Catch a missing folder or an existing file before spending seconds generating.
+    if (std::string problem = checkOutputFile(out, force, "--out"); !problem.empty()) return fail(problem);
+    // Progress on stderr: a 16385-sample island takes minutes on two cores.
+    std::fprintf(stderr, "vista: generating a %dx%d island...\n", size, size);
 
     auto start = std::chrono::steady_clock::now();
     Heightmap map = generateIsland(IslandParams{size, seed});
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    std::string why = ext == ".exr" ? saveHeightmapExr(out, map) : saveHeightmapPng16(out, map);
-    if (!why.empty()) return fail(why);
+    std::string why = ext == ".exr" ? saveHeightmapExr(out, map, force) : saveHeightmapPng16(out, map, force);
+    if (!why.empty()) return fail(why, 1);
     auto [lo, hi] = std::minmax_element(map.samples.begin(), map.samples.end());
     std::size_t land = std::size_t(std::count_if(map.samples.begin(), map.samples.end(), [](float v) { return v >= 0.12f; }));
     std::printf("wrote %s: %dx%d island, seed %u, min %.4f max %.4f, land %.1f%% (above 0.12), generated in %.2f s\n",

@@ -11,6 +11,7 @@ namespace vista {
 // Prints one line saying what was written and returns 0; on bad input (size outside
 // 2..16385, unknown extension, unwritable output) prints "vista: <reason>" to stderr and
 // returns 2.
-int runGenHeightmap(int size, std::uint32_t seed, const std::filesystem::path& out);
+// force: replace an existing --out file (refused otherwise).
+int runGenHeightmap(int size, std::uint32_t seed, const std::filesystem::path& out, bool force = false);
 
 }  // namespace vista

@@ -3,11 +3,13 @@
 #include "terrain/heightmap.h"
 
 #include "terrain/exr_header.h"
+#include "config/file_io.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -86,6 +88,8 @@ std::string loadRaw16(const std::filesystem::path& file, int width, int height, 
     return {};
 }
 
+std::string errorOrTruncated(const std::string& error) { return error.empty() ? "the file is truncated or damaged" : error; }
+
 // An opened image: its channels and size are checked before any sample is read.
 std::string readImage(OIIO::ImageInput& in, std::uint64_t max_bytes, Heightmap& map) {
     const OIIO::ImageSpec& spec = in.spec();
@@ -97,11 +101,14 @@ std::string readImage(OIIO::ImageInput& in, std::uint64_t max_bytes, Heightmap& 
     if (std::string why = checkSize(spec.width, spec.height, max_bytes); !why.empty()) return why;
     std::vector<float> samples(std::size_t(spec.width) * std::size_t(spec.height));
     // One channel at a time, so an RGB(A) file needs two heightmaps of memory, not four.
-    if (!in.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, samples.data())) return "cannot read (" + in.geterror() + ")";
+    // has_error: some readers (TIFF) fill a truncated file's missing rows with 0 and still return true.
+    if (!in.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, samples.data()) || in.has_error())
+        return "cannot read (" + errorOrTruncated(in.geterror()) + ")";
     if (channels > 1) {
         std::vector<float> other(samples.size());
         for (int c = 1; c < 3; ++c) {  // R, G, B; alpha is ignored
-            if (!in.read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, other.data())) return "cannot read (" + in.geterror() + ")";
+            if (!in.read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, other.data()) || in.has_error())
+                return "cannot read (" + errorOrTruncated(in.geterror()) + ")";
             for (std::size_t i = 0; i < samples.size(); ++i)
                 if (!(other[i] == samples[i]) && !(std::isnan(other[i]) && std::isnan(samples[i])))
                     return "has " + std::to_string(channels) + " channels whose colours differ at " + texelName(i, spec.width) +
@@ -194,6 +201,11 @@ bool isRaw(const std::string& name) { return lowercase(std::filesystem::path(nam
 Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
                         std::uint64_t max_bytes) {
     Heightmap map;
+    // A FIFO, /dev/zero (or a link to it) or a directory is refused before any read.
+    if (std::string why = inputFileProblem(file, 2 * max_bytes + (std::uint64_t(1) << 20)); !why.empty()) {
+        errors.push_back({file.string(), 0, why});
+        return map;
+    }
     std::string why = isRaw(file.string()) ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
                                            : loadImage(file, max_bytes, map);
     return finish(std::move(map), std::move(why), file.string(), errors);
@@ -212,6 +224,19 @@ Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::strin
     return finish(std::move(map), std::move(why), name, errors);
 }
 
+bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, const std::string& file, InputErrors& errors) {
+    std::size_t bad = 0, first = 0;
+    for (std::size_t i = 0; i < map.samples.size(); ++i)
+        if (!(std::abs(offset_m + double(map.samples[i]) * scale_m) <= kHeightLimitM) && bad++ == 0) first = i;
+    if (bad == 0) return true;
+    char text[160];
+    std::snprintf(text, sizeof text, "height %g m (sample %g) at %s is outside the accepted -%g..%g m, %zu such sample(s)",
+                  offset_m + double(map.samples[first]) * scale_m, double(map.samples[first]),
+                  texelName(first, map.width).c_str(), kHeightLimitM, kHeightLimitM, bad);
+    errors.push_back({file, 0, std::string(text) + "; [terrain] height_scale_m and height_offset_m map samples to metres"});
+    return false;
+}
+
 float Heightmap::sample(double x, double z) const {
     if (width <= 0 || height <= 0) return 0.0f;
     // NaN coordinates clamp to 0 rather than reaching an int conversion.
@@ -225,7 +250,27 @@ float Heightmap::sample(double x, double z) const {
     return float(top + (bottom - top) * fz);
 }
 
-std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map) {
+namespace {
+
+// Encodes in memory, then writes atomically: every write and the close are checked (a full
+// disk is an error, never a truncated map) and a crash never leaves a partial file.
+std::string encodeAndWrite(const std::filesystem::path& file, const char* format, const OIIO::ImageSpec& spec,
+                           const void* pixels, bool force) {
+    auto out = OIIO::ImageOutput::create(format);
+    if (!out) return file.string() + ": OpenImageIO has no " + format + " writer (" + OIIO::geterror() + ")";
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    out->set_ioproxy(&memory);
+    if (!out->open(file.string(), spec)) return file.string() + ": " + out->geterror();
+    bool ok = out->write_image(spec.format, pixels);
+    ok = out->close() && ok;
+    if (!ok) return file.string() + ": " + out->geterror();
+    return writeFileAtomic(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), force);
+}
+
+}  // namespace
+
+std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map, bool force) {
     if (map.width < 1 || map.height < 1 || map.samples.size() != std::size_t(map.width) * std::size_t(map.height))
         return file.string() + ": heightmap is empty or its size does not match its samples";
     std::vector<std::uint16_t> pixels(map.samples.size());
@@ -233,23 +278,17 @@ std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightma
         float v = map.samples[i];
         pixels[i] = std::uint16_t(std::lround(double(std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f)) * 65535.0));
     }
-    // Written under a temporary name and renamed, so a crash never leaves a truncated map.
-    std::filesystem::path tmp = file;
-    tmp += ".part";
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) return file.string() + ": OpenImageIO has no png writer (" + OIIO::geterror() + ")";
     OIIO::ImageSpec spec(map.width, map.height, 1, OIIO::TypeDesc::UINT16);
-    if (!out->open(tmp.string(), spec)) return file.string() + ": " + out->geterror();
-    bool ok = out->write_image(OIIO::TypeDesc::UINT16, pixels.data());
-    ok = out->close() && ok;
-    if (!ok) {
-        std::filesystem::remove(tmp);
-        return file.string() + ": " + out->geterror();
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) return file.string() + ": cannot rename from " + tmp.string() + " (" + ec.message() + ")";
-    return {};
+    return encodeAndWrite(file, "png", spec, pixels.data(), force);
+}
+
+std::string saveHeightmapExr(const std::filesystem::path& file, const Heightmap& map, bool force) {
+    if (map.width < 1 || map.height < 1 || map.samples.size() != std::size_t(map.width) * std::size_t(map.height))
+        return file.string() + ": heightmap is empty or its size does not match its samples";
+    OIIO::ImageSpec spec(map.width, map.height, 1, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"Y"};
+    spec.attribute("compression", "zip");
+    return encodeAndWrite(file, "openexr", spec, map.samples.data(), force);
 }
 
 // ---------------------------------------------------------------------------------------

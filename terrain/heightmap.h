@@ -35,8 +35,19 @@ Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int ra
 Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::string& name, int raw_width, int raw_height,
                           InputErrors& errors, std::uint64_t max_bytes = std::uint64_t(4) << 30);
 
-// Writes a 16-bit single-channel PNG of values clamped to [0, 1]. "" on success, else why.
-std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map);
+// Terrain heights, metres (offset + sample * scale), must lie within +-kHeightLimitM: the
+// atmosphere ends 100 km up, and beyond it a height is a broken file, not terrain (a sample
+// of 1e30 drew nothing at all).
+constexpr double kHeightLimitM = 100000.0;
+// Appends an error naming file when a height lies outside that range; true when all fit.
+bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, const std::string& file, InputErrors& errors);
+
+// Writes a 16-bit single-channel PNG of values clamped to [0, 1], atomically (config/file_io.h);
+// force: replace an existing file (the default for library callers such as tests that
+// regenerate a map; `vista gen-heightmap` passes its --force). "" on success, else why.
+std::string saveHeightmapPng16(const std::filesystem::path& file, const Heightmap& map, bool force = true);
+// Writes a single-channel float EXR ("Y") the same way.
+std::string saveHeightmapExr(const std::filesystem::path& file, const Heightmap& map, bool force = true);
 
 struct IslandParams {
     int size = 1025;          // samples per side (any size >= 2; 2^n + 1 suits the quadtree)

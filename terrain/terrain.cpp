@@ -84,18 +84,32 @@ std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() 
     return programs;
 }
 
-std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+namespace {
+
+bool checkGrid(int grid, InputErrors& errors) {
+    if (grid % 4 == 0) return true;  // quadrants must start on even vertices for the morph
+    errors.push_back({"[terrain] grid", 0, "grid = " + std::to_string(grid) + " is not accepted; accepted: a multiple of 4 in 4..256"});
+    return false;
+}
+
+}  // namespace
+
+Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors) {
+    if (!checkGrid(s.grid, errors)) return {};
     Heightmap map = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
+    if (map.samples.empty() || !checkHeightRange(map, s.height_scale_m, s.height_offset_m, s.heightmap, errors)) return {};
+    return map;
+}
+
+std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    Heightmap map = loadChecked(s, errors);
     if (map.samples.empty()) return nullptr;
     return create(std::move(map), s, shaders, errors);
 }
 
 std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSettings& s, ShaderLibrary& shaders,
                                          InputErrors& errors, int max_texture) {
-    if (s.grid % 4 != 0) {  // quadrants must start on even vertices for the morph
-        errors.push_back({"[terrain] grid", 0, "grid = " + std::to_string(s.grid) + " is not accepted; accepted: a multiple of 4 in 4..256"});
-        return nullptr;
-    }
+    if (!checkGrid(s.grid, errors)) return nullptr;
     std::unique_ptr<Terrain> t(new Terrain);
     t->source_ = s;
     t->map_ = std::move(heightmap);

@@ -49,6 +49,9 @@ public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
     // is accepted). Needs a current GL context and the shader library.
     static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
+    // The checks load() makes without GL (heightmap file, samples, height range, grid), for
+    // `vista check`; returns the map when they pass (empty otherwise, with errors).
+    static Heightmap loadChecked(const TerrainSettings& s, InputErrors& errors);
     // Same, from a heightmap already in memory (benchmarks, generated maps). max_texture
     // lowers the texture size limit the tiles must fit (tests; 0: GL_MAX_TEXTURE_SIZE).
     static std::unique_ptr<Terrain> create(Heightmap map, const TerrainSettings& s, ShaderLibrary& shaders,

@@ -2,6 +2,8 @@
 #include "renderer/gl/objects.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace vista::gl {
 
@@ -9,6 +11,15 @@ Buffer Buffer::create(GLsizeiptr bytes, const void* data, GLbitfield flags, std:
     GLuint id = 0;
     glCreateBuffers(1, &id);
     glNamedBufferStorage(id, bytes, data, flags);
+    // Out of memory leaves the buffer without storage; drawing with it crashed llvmpipe. Asking
+    // the object (not glGetError) leaves other pending errors to whoever checks them.
+    GLint immutable = GL_TRUE;
+    if (bytes > 0) glGetNamedBufferParameteriv(id, GL_BUFFER_IMMUTABLE_STORAGE, &immutable);
+    if (immutable != GL_TRUE) {
+        glDeleteBuffers(1, &id);
+        throw std::runtime_error("the GL could not allocate buffer '" + std::string(name) + "' of " + std::to_string(bytes) +
+                                 " bytes (out of memory?)");
+    }
     Buffer buffer(id, bytes);
     buffer.label(name);
     return buffer;
@@ -19,6 +30,13 @@ Texture Texture::create2D(GLsizei width, GLsizei height, GLenum internal_format,
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     glTextureStorage2D(id, levels, internal_format, width, height);
+    GLint immutable = GL_FALSE;  // as for buffers: no storage after an out-of-memory
+    glGetTextureParameteriv(id, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+    if (immutable != GL_TRUE) {
+        glDeleteTextures(1, &id);
+        throw std::runtime_error("the GL could not allocate texture '" + std::string(name) + "' of " + std::to_string(width) +
+                                 "x" + std::to_string(height) + " (out of memory, or larger than the GL allows?)");
+    }
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -91,7 +91,7 @@ TEST_CASE("gl: golden images of the default scene, per post effect and the full 
         const std::filesystem::path file = dir / (std::string(g.name) + ".png");
         if (update) {
             std::filesystem::create_directories(dir);
-            CHECK(writePng(file, 256, 144, ldr) == "");
+            CHECK(writePng(file, 256, 144, ldr, true) == "");
             continue;
         }
         auto in = OIIO::ImageInput::open(file.string());

@@ -136,7 +136,7 @@ TEST_CASE("farm: an encoder failure is reported with its message and leaves no v
     std::vector<std::filesystem::path> frames;
     for (int i = 0; i < 2; ++i) {
         frames.push_back(dir.path / ("frame_000" + std::to_string(i) + ".png"));
-        REQUIRE(writePng(frames.back(), 6, 4, rgba) == "");
+        REQUIRE(writePng(frames.back(), 6, 4, rgba, /*force=*/false) == "");
     }
     // A stand-in encoder that says why and fails, as ffmpeg does on a full disk.
     const std::filesystem::path fake = dir.path / "fake-ffmpeg";
