@@ -13,6 +13,8 @@
 #include "renderer/transient_pool.h"
 #include "lighting/local_lights.h"
 #include "postfx/chain.h"
+#include "postfx/taa.h"
+#include "renderer/blue_noise.h"
 #include "shadows/spot_shadows.h"
 #include "shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
@@ -87,6 +89,11 @@ public:
     std::unique_ptr<Terrain> releaseTerrain() { return std::move(terrain_); }  // benches swap terrains
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
+    // Drops every history kept across frames (TAA, the clouds' accumulation and the camera that
+    // cut detection compares with), so the next frame starts as the first frame of a run does.
+    // Captures call it before their settle frames (docs/temporal.md).
+    void resetHistory();
+    const TemporalAA* taa() const { return taa_.get(); }  // null while [postfx.taa] is off
 
     ShaderLibrary& shaders() { return shaders_; }
     PassTimers& timers() { return timers_; }
@@ -98,7 +105,8 @@ public:
     // GPU bytes the renderer holds: the transient pool, every feature's long-lived objects and
     // the frame's own buffers. Per feature in the frame's "FEATURE.memory_bytes" counters.
     std::size_t gpuMemoryBytes() const;
-    RenderContext context(const ViewParams& view, const Settings& settings, double time_s);
+    // jitter_px: the TAA's sub-pixel shift of the projection this frame (none by default).
+    RenderContext context(const ViewParams& view, const Settings& settings, double time_s, glm::dvec2 jitter_px = {});
     // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
     double measureReferenceCopy(int width, int height);
     std::uint64_t frameIndex() const { return frame_; }
@@ -135,6 +143,12 @@ private:
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
+    BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
+    std::unique_ptr<TemporalAA> taa_;     // null while [postfx.taa] is off
+    ViewParams last_view_;                // the previous frame's camera, for camera-cut detection
+    double last_time_s_ = 0.0;
+    bool has_last_view_ = false;
+    std::uint64_t temporal_index_ = 0;    // frames since resetHistory(): the jitter sequence's index
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame
