@@ -298,7 +298,9 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         taa_->release(device_);
         taa_.reset();
     }
-    const glm::dvec2 jitter = taa ? TemporalAA::jitterPx(temporal_index_) : glm::dvec2(0.0);
+    // A frame without history (the first after a reset or a cut) is not jittered: nothing
+    // would average its offset out, and it matches an image rendered without TAA.
+    const glm::dvec2 jitter = taa && !cut ? TemporalAA::jitterPx(temporal_index_) : glm::dvec2(0.0);
     RenderContext rc = context(view, s, time_s, jitter);
     ++temporal_index_;
     FrameGraph graph;
