@@ -149,6 +149,17 @@ TEST_CASE("gl: a camera cut leaves nothing of the previous view, and a fast pan 
     MESSAGE("after a cut: error " << cut_error << " (a first frame: " << fresh_error << ")");
     CHECK(cut_error < 1.2 * fresh_error);
 
+    // A jump of 3 km with the same heading: the old clouds would reproject into the image.
+    ViewParams here = skyView(20.0), there = skyView(20.0);
+    there.position.x += 3000.0;
+    const std::vector<double> ref_there = reference(there);
+    const double first_error = meanSquaredError(settled(cloudScene(true), there, 0), ref_there, kUpper);
+    renderer().resetHistory();
+    for (int i = 0; i < 8; ++i) frame(cloudScene(true), here);
+    const double jump_error = meanSquaredError(frame(cloudScene(true), there), ref_there, kUpper);
+    MESSAGE("after a 3 km jump: error " << jump_error << " (a first frame: " << first_error << ")");
+    CHECK(jump_error < 1.2 * first_error);
+
     // Pan: 5 degrees a frame (below the cut threshold), history on; its last frame against the
     // converged reference is no worse than a history-free frame of that view.
     Settings s = cloudScene(true);
