@@ -7,7 +7,8 @@
 // (the current pixel alone) outside the previous image, where the previous frame saw
 // something nearer at that place (a disocclusion), and on a camera cut (u_params.w).
 // Outputs: 0 the image for the post chain (the history with an unsharp mask against its own
-// bilinear fetch, so the sharpening is stable over frames), 1 the new history (unsharpened),
+// bilinear fetch, so the sharpening is stable over frames; alpha passed through from this
+// frame), 1 the new history (unsharpened),
 // 2 this frame's depth for the next frame's disocclusion test.
 #include "../../renderer/shaders/fullscreen.glsl"
 
@@ -67,7 +68,8 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 last = textureSize(u_current, 0) - 1;
     vec2 size = vec2(textureSize(u_current, 0));
-    vec3 current = max(texelFetch(u_current, p, 0).rgb, vec3(0.0));
+    vec4 current_texel = texelFetch(u_current, p, 0);
+    vec3 current = max(current_texel.rgb, vec3(0.0));
     float depth = texelFetch(u_depth, p, 0).r;
     depth = (depth > 0.0 && !isnan(depth)) ? min(depth, 1.0) : 0.0;
     o_depth = depth;
@@ -118,7 +120,10 @@ void main() {
         display = max(display, vec3(0.0));
     }
     if (any(isnan(result)) || any(isinf(result))) result = current, display = current;
-    o_color = vec4(display, 1.0);
+    // Alpha is this frame's, never resolved: it carries the scene's coverage (0 where nothing
+    // was drawn) and debug values such as the terrain error view's screen error, which HDR
+    // captures and tests read per frame.
+    o_color = vec4(display, current_texel.a);
     o_history = vec4(result, 1.0);
 }
 #endif
