@@ -533,8 +533,14 @@ InputErrors applyOverride(std::string_view assignment, Settings& s) {
     }
     const Section* found = find(sections, section);
     if (!found) return fail(unknown("unknown section [" + section + "]", didYouMean(name, all), sectionNames(sections)));
-    if (!hasKey(*found, key))
-        return fail(unknown("unknown key [" + section + "] " + key, didYouMean(name, all), acceptedKeys(*found)));
+    if (!hasKey(*found, key)) {
+        // The section is known: suggest only its own keys (a key of another section with a
+        // similar name would be refused there too, or set something else).
+        std::vector<std::string> own;
+        for (const std::string& k : found->keys) own.push_back(found->name + "." + k);
+        for (const std::string& prefix : found->lists) own.push_back(found->name + "." + prefix + name.substr(dot));
+        return fail(unknown("unknown key [" + section + "] " + key, didYouMean(name, own), acceptedKeys(*found)));
+    }
     Applier apply(section, key, trim(assignment.substr(eq + 1)));
     describe(apply, s);
     return apply.error.empty() ? InputErrors{} : fail(apply.error);

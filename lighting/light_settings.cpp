@@ -129,7 +129,8 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     v.field({"max_lights_per_cell", "", "list capacity per tile or cluster; overflow is counted"}, s.max_lights_per_cell, 1, 4096);
     v.field({"min_screen_px", "px",
              "tiled and clustered: a light whose bounding sphere's screen radius is below this is skipped before any "
-             "per-tile work (0: none)"},
+             "per-tile work (0: none, the default; above 0 a skipped light can still have lit a pixel, so the methods may "
+             "differ)"},
             s.min_screen_px, 0.0f, 64.0f);
     v.field({"hash_node_m", "m", "leaf node size of the hashed light octree; 0 = half the mean radius"}, s.hash_node_m, 0.0f, 1.0e5f);
     v.field({"hash_memory_mb", "MiB", "memory bound of the hashed tables; beyond it nodes coarsen"}, s.hash_memory_mb, 1.0f, 65536.0f);

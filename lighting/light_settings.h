@@ -76,7 +76,7 @@ struct LightsSettings {
     float cluster_near_m = 0.0f;    //!< m, near_0 of near_k = near_0 * ratio^k, 0..1e4; 0 = the camera's near plane
     float cluster_far_m = 4000.0f;  //!< m, depth the bounded slices reach; the last slice also takes all beyond, 1..1e7
     int max_lights_per_cell = 1024; //!< list capacity per tile or cluster, 1..4096; overflow is counted and warned
-    float min_screen_px = 0.5f;     //!< px, tiled/clustered: lights whose sphere's screen radius is below this are skipped, 0..64 (0: none)
+    float min_screen_px = 0.0f;     //!< px, tiled/clustered: lights whose sphere's screen radius is below this are skipped, 0..64 (0: none; above 0 the methods may differ)
     float hash_node_m = 0.0f;       //!< m, leaf node size of the hashed light octree, 0..1e5; 0 = half the mean light radius
     float hash_memory_mb = 256.0f;  //!< MiB of GPU tables + index list, 1..65536; beyond it the node size doubles until it fits
     float hash_slack = 0.25f;       //!< extra hash-table room kept for incremental updates, fraction 0..4

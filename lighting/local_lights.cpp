@@ -500,13 +500,20 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             glEnablei(GL_BLEND, 0);
             glBlendFunci(0, GL_ONE, GL_ONE);
             if (data.heat.valid()) glDisablei(GL_BLEND, 1);
-            if (culled) {  // drawn only when lights.cull found a tile with a light
-                glBindVertexArray(rc.empty_vao);
-                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, shade_draw_.id());
-                glDrawArraysIndirect(GL_TRIANGLES, nullptr);
-                glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-            } else {
-                drawFullscreen(rc);
+            // One draw per chunk of "every light" (naive, overflowed cells; lights.glsl), added up;
+            // hashed ranges are always lists.
+            const std::uint32_t n = std::uint32_t(order_scratch_.size());
+            const std::uint32_t draws = method == LightCulling::Hashed ? 1 : std::max<std::uint32_t>(1, (n + kLightChunk - 1) / kLightChunk);
+            for (std::uint32_t k = 0; k < draws; ++k) {
+                glUniform2ui(0, k * kLightChunk, kLightChunk);
+                if (culled) {  // drawn only when lights.cull found a tile with a light
+                    glBindVertexArray(rc.empty_vao);
+                    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, shade_draw_.id());
+                    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+                    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+                } else {
+                    drawFullscreen(rc);
+                }
             }
             glDisablei(GL_BLEND, 0);
             if (data.spot.valid()) {

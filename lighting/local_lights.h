@@ -57,6 +57,10 @@ std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeigh
 
 // Longest list a tile or cluster keeps (the culling pass's shared-memory list).
 inline constexpr int kMaxLightsPerCell = 4096;
+// Lights one lights.shade draw shades for "every light" ranges (naive, overflowed cells); more
+// lights take more draws. Below llvmpipe's 65,535 loop iterations per shader invocation, with
+// room for the other loops of the shader (spot shadow filter taps).
+inline constexpr std::uint32_t kLightChunk = 32768;
 
 // Lights the settings describe (explicit entries, then volumes), before animation. 0 when
 // [lights] is disabled.

@@ -38,7 +38,7 @@ const uint kOverflowCount = 0xFFFFFFFFu;
 const float kLightFalloffEps = 0.01;  // m^2, lighting/lights.h kFalloffEpsM2
 
 // The lights that may reach one position: indices u_light_indices[first .. first + count), or
-// every light (0 .. light count) when `all` is set.
+// when `all` is set every light (first .. first + count: first > 0 for a later chunk of them).
 struct LightRange {
     uint first, count;
     bool all;
@@ -105,7 +105,7 @@ LightRange lightRange(ivec2 pixel, vec3 position) {
 #endif
 
 uint lightAt(LightRange range, uint i) {
-    return range.all ? i : u_light_indices[range.first + i];
+    return range.all ? range.first + i : u_light_indices[range.first + i];
 }
 
 // Radiance one light reflects toward the eye (v) from a surface at a camera-relative position:

@@ -144,7 +144,8 @@ TEST_CASE("gl: lights below the screen footprint are skipped, and lights that re
         REQUIRE(parseLightSpec(spec, l.light).empty());
         return l;
     };
-    // A 0.2 m light some 800 m ahead: well under half a pixel.
+    // A 0.2 m light some 800 m ahead: well under half a pixel (skipping is opt-in: it is inexact).
+    s.lights.min_screen_px = 0.5f;
     s.lights.lights = {light("tiny", "point 300 0 300  ground 1  radius 0.2  intensity 100")};
     Frame tiny = render(s, view);
     CHECK(tiny.report.counters.at("lights.skipped") == 1.0);
