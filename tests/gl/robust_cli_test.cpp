@@ -155,8 +155,12 @@ TEST_CASE("gl: a full disk, SIGTERM and a memory limit during a capture leave no
     CHECK(leftovers() == 0);
 
     // A frame that cannot fit the address space: a message and exit 1, not a crash in Mesa.
+    // AddressSanitizer reserves terabytes of shadow memory at start, so under a sanitizer build
+    // an address-space limit stops the process before vista runs: that part is for plain builds.
+#if !defined(__SANITIZE_ADDRESS__)
     Run big = shell("bash -c 'ulimit -v 2000000; exec " + std::string(VISTA_EXECUTABLE) +
                     " capture --size 8192x8192 --frames 1 --out " + out + "-big'");
     CHECK(big.code == 1);
     CHECK(has(big, "--size 8192x8192 needs about"));
+#endif
 }
