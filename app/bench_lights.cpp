@@ -6,8 +6,8 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
-#include "lighting/light_settings.h"
-#include "lighting/local_lights.h"
+#include "renderer/lighting/light_settings.h"
+#include "renderer/lighting/local_lights.h"
 #include "terrain/heightmap.h"
 
 #include <nlohmann/json.hpp>

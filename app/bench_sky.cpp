@@ -8,7 +8,7 @@
 #include "app/scene.h"
 #include "app/stats.h"
 #include "sky/atmosphere.h"
-#include "sky/cloud_model.h"
+#include "sky/clouds/cloud_model.h"
 #include "sky/sky_reference_image.h"
 
 #include <glm/gtc/packing.hpp>

@@ -9,13 +9,13 @@
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
 #include "app/scene.h"
-#include "lighting/deferred.h"
-#include "lighting/local_lights.h"
+#include "renderer/lighting/deferred.h"
+#include "renderer/lighting/local_lights.h"
 #include "sky/atmosphere.h"
-#include "sky/cloud_model.h"
-#include "sky/clouds.h"
-#include "sky/weather.h"
-#include "sky/weather_model.h"
+#include "sky/clouds/cloud_model.h"
+#include "sky/clouds/clouds.h"
+#include "sky/weather/weather.h"
+#include "sky/weather/weather_model.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -33,28 +33,28 @@ std::vector<ProgramKey> allPrograms() {
     };
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_SUN_SHADOW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"SHADOW_TERM_VIEW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_SUN_SHADOW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"SHADOW_TERM_VIEW"}});
     for (auto& [file, defines] : shadowPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : cloudPrograms()) programs.push_back({file, defines});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_CLOUD_SHADOW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
-    programs.push_back({"lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_CLOUD_SHADOW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
+    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
-        programs.push_back({"lighting/shaders/light_shade.glsl", {method}});
-        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
-        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS"}});
-        programs.push_back({"lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS"}});
     }
     for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"}) {
-        programs.push_back({"lighting/shaders/light_cull.glsl", {method}});
-        programs.push_back({"lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
+        programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method}});
+        programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});

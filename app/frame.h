@@ -4,23 +4,23 @@
 #pragma once
 
 #include "config/settings.h"
-#include "grass/grass.h"
+#include "terrain/grass/grass.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
-#include "lighting/local_lights.h"
+#include "renderer/lighting/local_lights.h"
 #include "postfx/chain.h"
-#include "shadows/spot_shadows.h"
-#include "shadows/sun_shadows.h"
+#include "renderer/shadows/spot_shadows.h"
+#include "renderer/shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
-#include "sky/clouds.h"
+#include "sky/clouds/clouds.h"
 #include "sky/sky_lighting.h"
-#include "sky/weather.h"
+#include "sky/weather/weather.h"
 #include "terrain/terrain.h"
-#include "water/water.h"
+#include "terrain/water/water.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -465,7 +465,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.clouds);
     describe(v, s.shadows);
     describe(v, s.weather);
-    describe(v, s.lights);  // lighting/light_settings.cpp
+    describe(v, s.lights);  // renderer/lighting/light_settings.cpp
     describe(v, s.water);
     describe(v, s.postfx);
     describe(v, s.exposure);

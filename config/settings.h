@@ -4,7 +4,7 @@
 #pragma once
 
 #include "config/visitor.h"
-#include "lighting/light_settings.h"  // LightsSettings: part of vista_config, no renderer code
+#include "renderer/lighting/light_settings.h"  // LightsSettings: part of vista_config, no renderer code
 
 #include <glm/vec3.hpp>
 
@@ -95,7 +95,7 @@ struct TerrainSettings {
     float rock_slope = 0.75f;         //!< normal.y below which slopes turn to rock
 };
 
-//! Grass (grass/grass.h): instanced curved blades placed per world cell around the camera,
+//! Grass (terrain/grass/grass.h): instanced curved blades placed per world cell around the camera,
 //! culled on the GPU, bent by wind, written to the G-buffer after the terrain. Needs [terrain].
 struct GrassSettings {
     bool enabled = true;
@@ -196,7 +196,7 @@ struct SkySettings {
 };
 
 //! One cloud layer ([clouds.low], [clouds.high]): a spherical shell around the planet filled
-//! with fBm value noise (sky/clouds.h). Coverage 0 or enabled = false drops the layer.
+//! with fBm value noise (sky/clouds/clouds.h). Coverage 0 or enabled = false drops the layer.
 struct CloudLayerSettings {
     bool enabled = true;
     float base_m = 1500.0f;          //!< m, altitude of the shell's bottom above sea level (y = 0), 0..100000
@@ -212,7 +212,7 @@ struct CloudLayerSettings {
     int seed = 1;                    //!< noise pattern, 0..65535
 };
 
-//! Noise cloud layers over the atmosphere (sky/clouds.h): "clouds.shadow" (a sun
+//! Noise cloud layers over the atmosphere (sky/clouds/clouds.h): "clouds.shadow" (a sun
 //! transmittance map for the terrain) and "clouds.shell" (the layers over the sky). They need
 //! [sky] enabled: the clouds are lit through its transmittance LUT.
 struct CloudsSettings {
@@ -233,7 +233,7 @@ struct CloudsSettings {
 
 enum class WeatherKind : int { Rain, Snow };
 
-//! Rain or snow around the camera (sky/weather.h): drops placed per world cell of a box that
+//! Rain or snow around the camera (sky/weather/weather.h): drops placed per world cell of a box that
 //! moves with the camera, falling with the wind, drawn as camera-facing streaks oriented by their
 //! velocity relative to the camera ("weather.rain"), splashes on the ground ("weather.splash")
 //! and wet, darker and glossier terrain. Off: no pass, no object, dry terrain.
@@ -358,7 +358,7 @@ struct SsaoSettings {
 
 enum class ShadowFilter : int { Hard, Pcf, Pcss };
 
-//! Sun shadows: cascaded shadow maps (shadows/cascades.h) with PSSM splits, each cascade fitted
+//! Sun shadows: cascaded shadow maps (renderer/shadows/cascades.h) with PSSM splits, each cascade fitted
 //! to its view slice's bounding sphere and snapped to whole texels (stable while flying), plus
 //! an optional far cascade for distant mountains; filtered by rotated-Poisson PCF or PCSS.
 struct ShadowSettings {
@@ -381,7 +381,7 @@ struct ShadowSettings {
     float min_sun_elevation_deg = 0.0f;  //!< deg, below this the sun casts no shadows (no passes), -10..90
     bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
-    // Shadowed spot lights (shadows/spot_shadows.h): the visible spot lights with `shadow on`
+    // Shadowed spot lights (renderer/shadows/spot_shadows.h): the visible spot lights with `shadow on`
     // (their default), largest on screen first, each get a square tile of one depth atlas.
     bool spot_enabled = true;            //!< spot lights cast shadows from the atlas
     int spot_atlas_resolution = 2048;    //!< texels per atlas side, 256..8192
@@ -444,7 +444,7 @@ struct LensFlareSettings {
 enum class WaterReflection : int { Ssr, Sky };
 enum class WaterView : int { Shaded, Normals, Foam, Depth };
 
-//! The sea (water/water.h): a sum of Gerstner waves from a Pierson-Moskowitz spectrum of the
+//! The sea (terrain/water/water.h): a sum of Gerstner waves from a Pierson-Moskowitz spectrum of the
 //! wind, displaced in the vertex shader over camera-centred rings and shaded in a forward pass
 //! after the deferred lighting (reflection, refraction with absorption, foam, sun glitter, local
 //! lights), fogged by the aerial perspective; an underwater tint when the camera is below it.

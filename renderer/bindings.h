@@ -13,7 +13,7 @@ constexpr int kTex2 = 2;
 constexpr int kTex3 = 3;
 constexpr int kTex4 = 4;
 constexpr int kTerrainNodes = 1;   // shader storage: selected terrain node instances
-constexpr int kLightGrid = 1;      // uniform block: LightGrid (lighting/shaders/lights.glsl)
+constexpr int kLightGrid = 1;      // uniform block: LightGrid (renderer/lighting/shaders/lights.glsl)
 constexpr int kLights = 2;         // shader storage: local lights
 constexpr int kLightCells = 3;     // shader storage: per tile / cluster (offset, count)
 constexpr int kLightIndices = 4;   // shader storage: light index lists
@@ -21,14 +21,14 @@ constexpr int kLightHash = 5;      // shader storage: hashed light octree tables
 constexpr int kLightSpheres = 6;   // shader storage: view-space bounding spheres (culling)
 constexpr int kAux = 7;            // shader storage: a pass's second counter or pool
 constexpr int kLightShadeDraw = 10;  // shader storage: lights.shade's indirect draw (lights.cull sets it)
-constexpr int kShadowUniforms = 2; // uniform block: ShadowUniforms (shadows/shaders/shadows.glsl)
+constexpr int kShadowUniforms = 2; // uniform block: ShadowUniforms (renderer/shadows/shaders/shadows.glsl)
 constexpr int kShadowMap = 8;      // texture unit: sun cascades, depth compare (sampler2DArrayShadow)
 constexpr int kShadowDepth = 9;    // texture unit: the same cascades, raw depth (PCSS blocker search)
-constexpr int kSpotShadowUniforms = 3;  // uniform block: SpotShadowUniforms (shadows/shaders/spot_shadows.glsl)
+constexpr int kSpotShadowUniforms = 3;  // uniform block: SpotShadowUniforms (renderer/shadows/shaders/spot_shadows.glsl)
 constexpr int kSpotShadowMap = 10;      // texture unit: spot shadow atlas, depth compare (sampler2DShadow)
 constexpr int kSpotShadowDepth = 11;    // texture unit: the same atlas, raw depth (PCSS blocker search, debug view)
-constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (grass/shaders/grass_common.glsl)
+constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (terrain/grass/shaders/grass_common.glsl)
 constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
-constexpr int kWeatherCells = 8;   // shader storage: the rain's visible drop cells (sky/shaders/weather_rain.glsl)
+constexpr int kWeatherCells = 8;   // shader storage: the rain's visible drop cells (sky/weather/shaders/weather_rain.glsl)
 
 }  // namespace vista::binding

@@ -24,7 +24,7 @@ struct SceneTargets {
     TextureHandle normal;
     TextureHandle light_heat;  // R32F local lights evaluated per pixel; only for [debug] view = lights
     TextureHandle ao;          // ambient occlusion in r, [0, 1] (1 = open); invalid: none (lighting.sun multiplies its ambient by it)
-    TextureHandle cloud_shadow;  // R16F sun transmittance through the clouds (sky/clouds.h); invalid: none
+    TextureHandle cloud_shadow;  // R16F sun transmittance through the clouds (sky/clouds/clouds.h); invalid: none
 };
 
 }  // namespace vista

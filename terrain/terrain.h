@@ -66,7 +66,7 @@ public:
     // Selects nodes for a camera (world position, camera-relative view-projection) and fills
     // the instance list with those in its frustum. error_scale is screenErrorScale() of the
     // view: the LOD keeps the vertical screen error within s.max_error_px for it. With
-    // `caster_frustum` (the view frustum widened towards the sun, shadows/cascades.h) the
+    // `caster_frustum` (the view frustum widened towards the sun, renderer/shadows/cascades.h) the
     // selection covers it instead, and shadow passes draw parts of it (shadowInstances()):
     // one selection per frame, so casters and receivers share one LOD. `extra` frusta (spot
     // shadow views, camera-relative) are covered too; the view draws only its own part.

@@ -1,5 +1,5 @@
 // Terrain material weights, shared by the terrain shader (terrain.glsl) and grass placement
-// (grass/shaders/grass_cull.glsl) so grass grows exactly where the ground is drawn as grass.
+// (terrain/grass/shaders/grass_cull.glsl) so grass grows exactly where the ground is drawn as grass.
 // Mirrored on the CPU by terrain/material_weights.h (tests compare both).
 // bands = (sand_top, grass_top, snow_start, band_blend), in heightmap units.
 

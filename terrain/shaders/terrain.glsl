@@ -34,7 +34,7 @@ float surfaceSample(vec2 t) {
 
 #ifdef VERTEX_SHADER
 #ifdef SHADOW_PASS
-// A sun shadow cascade (shadows/cascades.h): camera-relative world -> clip x, y and depth. The
+// A sun shadow cascade (renderer/shadows/cascades.h): camera-relative world -> clip x, y and depth. The
 // vertices morph for the main camera (distances from the camera-relative origin), so the
 // caster is the very surface the view shows.
 layout(location = 16) uniform mat4 u_shadow_matrix;

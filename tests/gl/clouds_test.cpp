@@ -4,7 +4,7 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "renderer_fixture.h"
-#include "sky/cloud_model.h"
+#include "sky/clouds/cloud_model.h"
 #include "terrain/heightmap.h"
 
 #include <glm/gtc/packing.hpp>

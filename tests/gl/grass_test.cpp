@@ -5,7 +5,7 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "renderer_fixture.h"
-#include "grass/grass.h"
+#include "terrain/grass/grass.h"
 #include "renderer/half.h"
 #include "terrain/heightmap.h"
 #include "terrain/material_weights.h"
@@ -52,7 +52,7 @@ Settings grassScene(const std::filesystem::path& map) {
     return s;
 }
 
-// One culled blade as the GPU wrote it (GrassBlade in grass/shaders/grass_common.glsl).
+// One culled blade as the GPU wrote it (GrassBlade in terrain/grass/shaders/grass_common.glsl).
 struct Blade {
     glm::vec4 root_width;
     glm::vec4 shape;

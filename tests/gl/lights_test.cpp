@@ -4,8 +4,8 @@
 // light sets give finite images; a scene without local lights runs no light pass.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "lighting/brdf.h"
-#include "lighting/light_settings.h"
+#include "renderer/lighting/brdf.h"
+#include "renderer/lighting/light_settings.h"
 #include "renderer_fixture.h"
 #include "terrain/heightmap.h"
 

@@ -3,7 +3,7 @@
 // footprint are skipped; a frame whose lights reach no tile draws no shade pass.
 #include "app/frame.h"
 #include "app/scene.h"
-#include "lighting/light_settings.h"
+#include "renderer/lighting/light_settings.h"
 #include "renderer_fixture.h"
 #include "terrain/heightmap.h"
 #include "terrain/terrain.h"

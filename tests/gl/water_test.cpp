@@ -9,9 +9,9 @@
 #include "renderer/half.h"
 #include "renderer_fixture.h"
 #include "terrain/heightmap.h"
-#include "water/shaders/water_bindings.glsl"
-#include "water/water.h"
-#include "water/waves.h"
+#include "terrain/water/shaders/water_bindings.glsl"
+#include "terrain/water/water.h"
+#include "terrain/water/waves.h"
 
 #include <glm/geometric.hpp>
 

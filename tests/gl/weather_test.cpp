@@ -6,7 +6,7 @@
 #include "app/frame.h"
 #include "renderer/half.h"
 #include "renderer_fixture.h"
-#include "sky/weather_model.h"
+#include "sky/weather/weather_model.h"
 #include "terrain/heightmap.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// The lighting BRDF (lighting/brdf.h): energy conservation by Monte Carlo integration of the
+// The lighting BRDF (renderer/lighting/brdf.h): energy conservation by Monte Carlo integration of the
 // directional albedo, reciprocity, and the white-furnace lower bound of the Lambert part.
-#include "lighting/brdf.h"
+#include "renderer/lighting/brdf.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

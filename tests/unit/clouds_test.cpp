@@ -1,7 +1,7 @@
-// Cloud maths on the CPU (sky/cloud_model.h): the noise's range and tiling, the shell
+// Cloud maths on the CPU (sky/clouds/cloud_model.h): the noise's range and tiling, the shell
 // intersection against brute-force marching, the wind at long run times, coverage over time,
 // and which settings leave the clouds off.
-#include "sky/cloud_model.h"
+#include "sky/clouds/cloud_model.h"
 
 #include <doctest/doctest.h>
 

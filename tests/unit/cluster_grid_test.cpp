@@ -1,8 +1,8 @@
 // Clustered shading's grid: 002's exponential slices against a hand-computed example, slice
 // lookup consistent with slice bounds, conservative CPU light assignment against brute force at
 // random points, and projected sphere bounds that hold the projected sphere.
-#include "lighting/cluster_grid.h"
-#include "lighting/random.h"
+#include "renderer/lighting/cluster_grid.h"
+#include "renderer/lighting/random.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

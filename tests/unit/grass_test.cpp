@@ -1,8 +1,8 @@
-// Grass placement and wind on the CPU (grass/grass_placement.h, terrain/material_weights.h):
+// Grass placement and wind on the CPU (terrain/grass/grass_placement.h, terrain/material_weights.h):
 // the integer toroidal wrap against 001's formula, deterministic per-cell placement, the box
 // covering the view, grass only where the terrain draws grass, length-keeping bends, and wind
 // that stays finite and equally strong after 10^7 s.
-#include "grass/grass_placement.h"
+#include "terrain/grass/grass_placement.h"
 #include "terrain/material_weights.h"
 
 #include <doctest/doctest.h>

@@ -2,8 +2,8 @@
 // rejected, incremental edits), and the light octree (queries a superset of brute force and
 // equal to the leaf cell's lights, incremental updates equal to a fresh build, memory bound,
 // zero-radius lights, 100,000 lights).
-#include "lighting/light_hash.h"
-#include "lighting/random.h"
+#include "renderer/lighting/light_hash.h"
+#include "renderer/lighting/random.h"
 
 #include <doctest/doctest.h>
 #include <glm/common.hpp>

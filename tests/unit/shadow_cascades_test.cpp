@@ -2,8 +2,8 @@
 // hold their slice, cascades snapped to whole texels (also 10,000 km out), degenerate views
 // and sun directions, and the caster selection that keeps the view's LOD.
 #include "renderer/camera.h"
-#include "shadows/cascades.h"
-#include "shadows/sun_shadows.h"
+#include "renderer/shadows/cascades.h"
+#include "renderer/shadows/sun_shadows.h"
 #include "terrain/cdlod.h"
 
 #include <doctest/doctest.h>

@@ -3,10 +3,10 @@
 // which lights get a tile (priority by screen size, the atlas limit and its count), the atlas
 // grid, the `shadow` key, and a terrain selection that covers the spot views while the view's
 // part stays the view's own selection.
-#include "lighting/light_settings.h"
-#include "lighting/local_lights.h"
+#include "renderer/lighting/light_settings.h"
+#include "renderer/lighting/local_lights.h"
 #include "renderer/camera.h"
-#include "shadows/spot_shadows.h"
+#include "renderer/shadows/spot_shadows.h"
 #include "terrain/cdlod.h"
 
 #include <doctest/doctest.h>

@@ -1,10 +1,10 @@
-// The sea's waves on the CPU (water/waves.h): the Pierson-Moskowitz integral against numerical
+// The sea's waves on the CPU (terrain/water/waves.h): the Pierson-Moskowitz integral against numerical
 // quadrature and its closed-form wave height, the wave set carrying the spectrum's variance,
 // Gerstner's closed form for one wave, normals and Jacobians against finite differences, crests
 // that never fold, the footprint filter, phases packed for the GPU exact 10^7 s in and
 // 10,000 km out, and the ring grid's reach.
-#include "water/water.h"
-#include "water/waves.h"
+#include "terrain/water/water.h"
+#include "terrain/water/waves.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

@@ -1,10 +1,10 @@
-// Weather maths on the CPU (sky/weather_model.h): drops placed per field cell of the box around
+// Weather maths on the CPU (sky/weather/weather_model.h): drops placed per field cell of the box around
 // the camera, deterministic, falling with the wind, the same 10,000 km out at t = 10^7 s;
 // visible-cell culling keeps every drop in view; splash cycles; wetness; the ripple normals.
 #include "config/ini.h"
 #include "renderer/camera.h"
-#include "sky/cloud_model.h"
-#include "sky/weather_model.h"
+#include "sky/clouds/cloud_model.h"
+#include "sky/weather/weather_model.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

@@ -1,10 +1,10 @@
 // Test probe (tests/gl/clouds_test.cpp): the clouds' value noise (r) and 5-octave fBm (g) at a
-// grid of points, for comparison with the CPU mirror (sky/cloud_model.h). The test mirrors the
+// grid of points, for comparison with the CPU mirror (sky/clouds/cloud_model.h). The test mirrors the
 // point formula.
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
-#include "../../../sky/shaders/cloud_noise.glsl"
+#include "../../../sky/clouds/shaders/cloud_noise.glsl"
 layout(location = 0) out vec4 o_probe;
 
 void main() {

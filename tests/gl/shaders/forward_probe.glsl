@@ -8,8 +8,8 @@
 #ifdef FRAGMENT_SHADER
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
-#include "../../../lighting/shaders/brdf.glsl"
-#include "../../../lighting/shaders/lights.glsl"
+#include "../../../renderer/lighting/shaders/brdf.glsl"
+#include "../../../renderer/lighting/shaders/lights.glsl"
 layout(location = 0) out vec4 o_probe;
 
 void main() {

@@ -1,13 +1,13 @@
 // Test probe (tests/gl/lights_test.cpp): the radiance light 0 reflects from a white-ish
 // up-facing surface at a grid of camera-relative points, through shadeLocalLight() and
-// evalBrdf(), for comparison with the CPU mirror (lighting/lights.h, lighting/brdf.h).
+// evalBrdf(), for comparison with the CPU mirror (renderer/lighting/lights.h, renderer/lighting/brdf.h).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
-#include "../../../lighting/shaders/brdf.glsl"
-#include "../../../lighting/shaders/lights.glsl"
+#include "../../../renderer/lighting/shaders/brdf.glsl"
+#include "../../../renderer/lighting/shaders/lights.glsl"
 layout(location = 0) out vec4 o_probe;
 
 void main() {

@@ -1,10 +1,10 @@
-// Test probe (tests/gl/weather_test.cpp): rainRippleNormal (sky/shaders/rain_ripples.glsl) at a
+// Test probe (tests/gl/weather_test.cpp): rainRippleNormal (sky/weather/shaders/rain_ripples.glsl) at a
 // grid of points and times, intensity 0.8, for comparison with the CPU mirror
-// (sky/weather_model.h); alpha is 1 where intensity 0 gives exactly (0, 1, 0).
+// (sky/weather/weather_model.h); alpha is 1 where intensity 0 gives exactly (0, 1, 0).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
-#include "../../../sky/shaders/rain_ripples.glsl"
+#include "../../../sky/weather/shaders/rain_ripples.glsl"
 layout(location = 0) out vec4 o_probe;
 
 void main() {

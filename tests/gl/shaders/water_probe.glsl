@@ -1,9 +1,9 @@
-// Test probe for the GPU waves (tests/gl/water_test.cpp): evaluates water/shaders/waves.glsl at
+// Test probe for the GPU waves (tests/gl/water_test.cpp): evaluates terrain/water/shaders/waves.glsl at
 // camera-relative rest points with the frame's water uniforms, for comparison with the CPU's
 // double-precision evaluateWaves().
 #ifdef COMPUTE_SHADER
 #include "../../../renderer/shaders/bindings.glsl"
-#include "../../../water/shaders/waves.glsl"
+#include "../../../terrain/water/shaders/waves.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = BINDING_AUX) readonly buffer Points { vec4 u_points[]; };  // x, z rest offset from the camera (m), footprint (m)
 layout(std430, binding = BINDING_COUNTERS) writeonly buffer Results { vec4 u_results[]; };

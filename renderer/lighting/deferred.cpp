@@ -1,0 +1,82 @@
+// Deferred sun and ambient light.
+#include "renderer/lighting/deferred.h"
+
+#include "renderer/bindings.h"
+#include "sky/shaders/sky_bindings.glsl"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vista {
+
+SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings) {
+    SunAndSky out;
+    out.sun_irradiance = glm::vec3(sky.sun_illuminance);
+    out.sky_up = glm::vec3(sky.sky_irradiance_up);
+    const float sun_up = float(std::max(sky.sun_direction.y, 0.0));
+    out.ground_up = settings.ground_albedo * (out.sun_irradiance * sun_up + out.sky_up);
+    return out;
+}
+
+std::vector<std::string> lightingPrograms() {
+    return {"renderer/lighting/shaders/sun.glsl"};
+}
+
+void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
+                        const SunShadowInput& shadows, DebugView debug) {
+    struct Data {
+        TextureHandle depth, albedo, normal, ao, cloud_shadow, hdr, shadow;
+    };
+    const Data& d = graph.addPass<Data>("lighting.sun",
+        [&](PassBuilder& b, Data& data) {
+            data.depth = b.read(targets.depth);
+            data.albedo = b.read(targets.albedo);
+            data.normal = b.read(targets.normal);
+            if (targets.ao.valid()) data.ao = b.read(targets.ao);
+            if (targets.cloud_shadow.valid()) data.cloud_shadow = b.read(targets.cloud_shadow);
+            if (shadows.valid()) data.shadow = b.read(shadows.map);
+            data.hdr = b.write(targets.hdr);
+        },
+        [&rc, light, shadows, debug](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
+            std::vector<std::string> defines;
+            if (data.ao.valid()) defines.push_back("HAS_AO");
+            if (data.cloud_shadow.valid()) defines.push_back("HAS_CLOUD_SHADOW");
+            if (data.shadow.valid()) {
+                defines.push_back("HAS_SUN_SHADOW");
+                if (debug == DebugView::Cascades) defines.push_back("SHADOW_CASCADE_VIEW");
+                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, shadows.uniforms);
+                glBindTextureUnit(binding::kShadowMap, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowMap, shadows.compare_sampler);
+                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.shadow));
+                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
+            }
+            if (debug == DebugView::Shadow) defines.push_back("SHADOW_TERM_VIEW");
+            glUseProgram(rc.shaders.get("renderer/lighting/shaders/sun.glsl", defines)->id());
+            if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
+            if (data.cloud_shadow.valid()) {
+                glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));
+                glUniform4fv(8, 1, &light.cloud_shadow_map.x);
+            }
+            glUniform3fv(0, 1, &light.sun_irradiance.x);
+            glUniform3fv(1, 1, &light.sky_up.x);
+            glUniform3fv(2, 1, &light.ground_up.x);
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            glBindTextureUnit(binding::kTex1, ctx.texture(data.albedo));
+            glBindTextureUnit(binding::kTex2, ctx.texture(data.normal));
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+            drawFullscreen(rc);
+            glDisable(GL_BLEND);
+            if (data.shadow.valid()) {
+                glBindSampler(binding::kShadowMap, 0);
+                glBindSampler(binding::kShadowDepth, 0);
+            }
+        });
+    targets.hdr = d.hdr;
+}
+
+}  // namespace vista

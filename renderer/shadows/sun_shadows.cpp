@@ -1,0 +1,215 @@
+// Sun shadow cascades on the GPU (see sun_shadows.h).
+#include "renderer/shadows/sun_shadows.h"
+
+#include "renderer/bindings.h"
+#include "terrain/terrain.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vista {
+
+namespace {
+
+// std140 mirror of ShadowUniforms in renderer/shadows/shaders/shadows.glsl.
+struct ShadowUniforms {
+    glm::mat4 matrix[kMaxSunCascades];
+    glm::vec4 range[kMaxSunCascades];  // near, far (view depth, m), texel (m), depth extent (m)
+    glm::vec4 info[kMaxSunCascades];   // has casters, PCF radius (texels)
+    glm::vec4 params;                  // count, blend band, taps, filter
+    glm::vec4 bias;                    // normal offset, depth bias (texels), PCSS radius per metre, max penumbra
+};
+
+}  // namespace
+
+bool sunCastsShadows(const ShadowSettings& s, const glm::dvec3& sun_dir) {
+    return s.enabled && sun_dir.y > std::sin(glm::radians(double(s.min_sun_elevation_deg))) && sun_dir.y > 0.0;
+}
+
+std::vector<std::pair<double, double>> cascadeSlices(const ShadowSettings& s, double near_m) {
+    std::vector<std::pair<double, double>> slices;
+    const double far = std::max(double(s.max_distance_m), near_m * 2.0);
+    const auto d = pssmSplits(near_m, far, s.cascades, s.split_lambda);
+    for (int i = 0; i < std::clamp(s.cascades, 1, kMaxSunCascades - 1); ++i)
+        slices.emplace_back(d[std::size_t(i)], d[std::size_t(i + 1)]);
+    if (s.far_cascade && s.far_distance_m > far) slices.emplace_back(far, double(s.far_distance_m));
+    return slices;
+}
+
+void SunShadows::prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir,
+                         const ViewParams& view, const ViewParams& fit_view) {
+    camera_ = view.position;
+    tan_sun_radius_ = float(std::tan(glm::radians(double(sky.sun_angular_radius_deg)))) * s.sun_size_scale;
+    const auto slices = cascadeSlices(s, view.near_m);
+    const bool keep = s.freeze && frozen_ && cascades_.size() == slices.size() && settings_.resolution == s.resolution;
+    settings_ = s;
+    if (keep) {  // frozen: the boxes stay in world space, only the camera-relative matrices move
+        for (ShadowCascade& c : cascades_) c.matrix = cascadeMatrix(light_, c, camera_);
+        return;
+    }
+    light_ = lightBasis(sun_dir);
+    const ViewMatrices m = viewMatrices(fit_view);
+    CascadeView cv;
+    cv.position = fit_view.position;
+    cv.forward = m.forward;
+    cv.up = m.up;
+    cv.tan_half_fov_y = std::tan(glm::radians(fit_view.fov_deg) * 0.5);
+    cv.aspect = double(fit_view.width) / double(std::max(fit_view.height, 1));
+    cascades_.clear();
+    for (auto [near, far] : slices) {
+        cascades_.push_back(fitCascade(light_, cv, near, far, s.resolution, s.stabilize));
+        cascades_.back().matrix = cascadeMatrix(light_, cascades_.back(), camera_);
+    }
+    frozen_ = s.freeze;
+}
+
+std::array<glm::dvec4, 6> SunShadows::casterFrustum(const glm::dmat4& view_proj) const {
+    // The view frustum widened towards the sun: the view's receivers and everything that can
+    // shadow them. (A union with the cascade boxes is not convex; this superset is.)
+    return extrudeTowardsSun(frustumFromViewProj(view_proj), light_.dir);
+}
+
+void SunShadows::allocate(int resolution, int layers) {
+    if (map_ && map_resolution_ == resolution && map_layers_ == layers) return;
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+    glTextureStorage3D(id, 1, GL_DEPTH_COMPONENT32F, resolution, resolution, layers);
+    map_ = gl::Texture::adopt(id, resolution, resolution, GL_DEPTH_COMPONENT32F);
+    map_.label("sun shadow cascades");
+    map_resolution_ = resolution;
+    map_layers_ = layers;
+    layer_fbs_.clear();
+    for (int i = 0; i < layers; ++i) {
+        layer_fbs_.push_back(gl::createFramebuffer("sun shadow cascade"));
+        glNamedFramebufferTextureLayer(layer_fbs_.back().id(), GL_DEPTH_ATTACHMENT, id, 0, i);
+        glNamedFramebufferDrawBuffer(layer_fbs_.back().id(), GL_NONE);
+    }
+    if (!uniforms_)
+        uniforms_ = gl::Buffer::create(sizeof(ShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "shadow uniforms");
+    if (!compare_) {
+        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "shadow compare");
+        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "shadow depth");
+    }
+}
+
+SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
+                                     const TerrainSettings& ts, const ShadowCaster& extra) {
+    const ShadowSettings& s = settings_;
+    const int count = int(cascades_.size());
+    stats_ = {};
+    stats_.cascades = count;
+    instances_.resize(std::size_t(count));
+    ShadowUniforms u{};
+    const double texel0 = count > 0 ? cascades_[0].texel_m : 1.0;
+    // Casters matter up to where a ray towards the sun clears the terrain's whole height span.
+    double reach = std::numeric_limits<double>::infinity();
+    if (terrain && terrain->quadtree().levels() > 0) {
+        const MinMaxQuadtree& tree = terrain->quadtree();
+        glm::vec2 span = tree.minMax(tree.levels() - 1, 0, 0);
+        reach = (double(span.y) - double(span.x)) / std::max(light_.dir.y, 1e-3) + 1.0;
+    }
+    for (int i = 0; i < count; ++i) {
+        const ShadowCascade& c = cascades_[std::size_t(i)];
+        auto& list = instances_[std::size_t(i)];
+        list.clear();
+        if (terrain) terrain->shadowInstances(casterPlanes(light_, c, camera_, reach), list);
+        stats_.caster_instances += std::int64_t(list.size());
+        u.matrix[i] = glm::mat4(c.matrix);
+        u.range[i] = glm::vec4(float(c.near_m), float(c.far_m), float(c.texel_m), float(2.0 * c.radius_m));
+        // The PCF kernel keeps cascade 0's world size, and at least a texel (or the set radius if smaller).
+        float radius = std::max(float(s.filter_radius_texels * texel0 / c.texel_m), std::min(s.filter_radius_texels, 1.0f));
+        u.info[i] = glm::vec4(list.empty() ? 0.0f : 1.0f, radius, 0.0f, 0.0f);
+        if (!list.empty()) ++stats_.drawn;
+    }
+    if (stats_.drawn == 0) return {};  // nothing casts: no passes, lighting.sun reads no shadows
+    allocate(s.resolution, count);
+    u.params = glm::vec4(float(count), s.blend_band, float(s.pcf_taps), float(int(s.filter)));
+    u.bias = glm::vec4(s.normal_offset_texels, s.depth_bias_texels, tan_sun_radius_, s.max_penumbra_texels);
+    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    stats_.memory_bytes = std::size_t(s.resolution) * std::size_t(s.resolution) * 4u * std::size_t(count) + sizeof u;
+
+    TextureHandle map = graph.importTexture("shadows.map", {s.resolution, s.resolution, PixelFormat::Depth32F}, map_.id());
+    struct Data {
+        TextureHandle map;
+    };
+    for (int i = 0; i < count; ++i) {
+        if (u.info[i].x == 0.0f) continue;  // a cascade with nothing to draw is skipped
+        const bool draw_extra = extra.valid() && cascades_[std::size_t(i)].near_m < extra.reach_m;
+        const Data& d = graph.addPass<Data>("shadows.cascade" + std::to_string(i),
+            [&](PassBuilder& b, Data& data) {
+                data.map = b.write(map);
+                if (draw_extra) b.read(extra.reads);
+            },
+            [this, &rc, terrain, &ts, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
+                const int res = settings_.resolution;
+                bindTarget(layer_fbs_[std::size_t(i)].id(), res, res);
+                glDepthMask(GL_TRUE);
+                glClearDepth(1.0);
+                glClear(GL_DEPTH_BUFFER_BIT);
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glEnable(GL_DEPTH_CLAMP);  // casters between the box and the sun land on depth 0
+                glEnable(GL_POLYGON_OFFSET_FILL);
+                glPolygonOffset(settings_.slope_bias, 0.0f);
+                GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
+                glUseProgram(program);
+                glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
+                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
+                // Seen from the sun, the terrain's back faces lie behind its front faces (a
+                // heightfield): culling them leaves the same depths for less rasterising.
+                glEnable(GL_CULL_FACE);
+                glCullFace(GL_BACK);
+                glFrontFace(GL_CCW);
+                terrain->drawShadow(ts, program, instances_[std::size_t(i)], i);
+                glDisable(GL_CULL_FACE);
+                if (extra.valid()) extra.draw(m);
+                glDisable(GL_POLYGON_OFFSET_FILL);
+                glDisable(GL_DEPTH_CLAMP);
+                glDisable(GL_DEPTH_TEST);
+                glClearDepth(0.0);  // back to the scene's reversed-Z clear value
+            });
+        map = d.map;
+    }
+    unsigned drawn = 0;
+    for (int i = 0; i < count; ++i)
+        if (u.info[i].x != 0.0f) drawn |= 1u << i;
+    return {map, uniforms_.id(), compare_.id(), depth_.id(), drawn};
+}
+
+TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
+                                   int cascades) {
+    struct Data {
+        TextureHandle map, out;
+    };
+    const Data& d = graph.addPass<Data>("shadows.view",
+        [&](PassBuilder& b, Data& data) {
+            if (shadows.valid()) data.map = b.read(shadows.map);
+            data.out = b.write(b.create("shadows.view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
+        },
+        [&rc, shadows, cascades](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.out);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
+            glUseProgram(rc.shaders.get("renderer/shadows/shaders/shadow_view.glsl")->id());
+            glUniform1i(0, data.map.valid() ? cascades : 0);
+            glUniform1i(1, int(shadows.drawn));
+            if (data.map.valid()) {
+                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.map));
+                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
+            }
+            drawFullscreen(rc);
+            glBindSampler(binding::kShadowDepth, 0);
+        });
+    return d.out;
+}
+
+std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms() {
+    return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}}};
+}
+
+}  // namespace vista

@@ -1,0 +1,93 @@
+// Sun shadows on the GPU: a depth texture array with one layer per cascade
+// (renderer/shadows/cascades.h), "shadows.cascadeN" passes drawing the terrain's casters into it, and
+// the uniforms lighting.sun reads (renderer/shadows/shaders/shadows.glsl). Made only while the sun
+// casts shadows; a cascade with no caster adds no pass and is read as lit.
+#pragma once
+
+#include "config/settings.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+#include "renderer/shadows/cascades.h"
+#include "renderer/shadows/shadow_caster.h"
+#include "terrain/cdlod.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+class Terrain;
+struct TerrainInstance;
+
+struct SunShadowStats {
+    int cascades = 0;                // in use this frame (PSSM + far)
+    int drawn = 0;                   // of those with casters (a pass each)
+    std::int64_t caster_instances = 0;  // terrain quadrants drawn over all cascades
+    std::size_t memory_bytes = 0;    // shadow map + uniforms
+};
+
+// What lighting.sun needs to sample the cascades.
+struct SunShadowInput {
+    TextureHandle map;           // the cascades (written by this frame's passes)
+    GLuint uniforms = 0;         // ShadowUniforms buffer
+    GLuint compare_sampler = 0;  // depth compare, bilinear (PCF)
+    GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search)
+    unsigned drawn = 0;          // bit c: cascade c had casters (the others' layers are stale)
+    bool valid() const { return map.valid(); }
+};
+
+// Whether the sun casts shadows with these settings (enabled and above min_sun_elevation_deg).
+bool sunCastsShadows(const ShadowSettings& s, const glm::dvec3& sun_dir);
+
+// The cascades' view-depth slices: PSSM from the near plane to max_distance_m, then the far
+// cascade to far_distance_m when it is on and reaches further.
+std::vector<std::pair<double, double>> cascadeSlices(const ShadowSettings& s, double near_m);
+
+class SunShadows {
+public:
+    // Fits the cascades for fit_view (normally the frame's view; or keeps frozen ones), with
+    // matrices relative to view's camera. Call before the terrain selection; casterFrustum() is
+    // then what the selection should cover.
+    void prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir, const ViewParams& view,
+                 const ViewParams& fit_view);
+    std::array<glm::dvec4, 6> casterFrustum(const glm::dmat4& view_proj) const;
+
+    // One "shadows.cascadeN" pass per cascade with casters in the terrain's selection; `extra`
+    // (grass; may be invalid) is drawn too into the cascades that start within its reach.
+    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+                             const ShadowCaster& extra = {});
+
+    const std::vector<ShadowCascade>& cascades() const { return cascades_; }
+    const LightBasis& light() const { return light_; }
+    const SunShadowStats& stats() const { return stats_; }
+    GLuint mapTexture() const { return map_.id(); }
+
+private:
+    void allocate(int resolution, int layers);
+
+    ShadowSettings settings_;
+    LightBasis light_;
+    glm::dvec3 camera_{0.0};
+    std::vector<ShadowCascade> cascades_;
+    bool frozen_ = false;
+    std::vector<std::vector<TerrainInstance>> instances_;  // per cascade, reused
+    SunShadowStats stats_;
+    float tan_sun_radius_ = 0.0f;
+
+    gl::Texture map_;
+    int map_resolution_ = 0, map_layers_ = 0;
+    std::vector<gl::Framebuffer> layer_fbs_;
+    gl::Buffer uniforms_;
+    gl::Sampler compare_, depth_;
+};
+
+// "shadows.view": the cascades' depth maps side by side ([debug] view = shadow_map), near the
+// sun dark; returns the RGBA8 display image.
+TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
+                                   int cascades);
+
+std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms();
+
+}  // namespace vista

@@ -1,0 +1,55 @@
+// Noise cloud layers ([clouds], sky/clouds/cloud_model.h for the maths): "clouds.shadow", a small map
+// of the sun's transmittance through the layers around the camera for lighting.sun, and
+// "clouds.shell", the layers drawn over the image after the sky. A frame with clouds off (or no
+// active layer) creates no Clouds object and adds no pass (app/frame.cpp).
+#pragma once
+
+#include "config/settings.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vista {
+
+class SkyAtmosphere;
+
+// Every program the clouds use, with its defines (for FrameRenderer::allPrograms()).
+using ProgramKeyText = std::pair<std::string, std::vector<std::string>>;
+std::vector<ProgramKeyText> cloudPrograms();
+
+class Clouds {
+public:
+    Clouds();
+    // This frame's layers (wind, coverage and noise origins at rc.time_s, in double) into the
+    // uniform block both passes read. sky_irradiance_up: the sky's irradiance on an up-facing
+    // surface (sky/sky_lighting.h), the clouds' ambient light. Returns the active layers.
+    int prepare(const RenderContext& rc, const CloudsSettings& clouds, const SkySettings& sky,
+                const glm::dvec3& sky_irradiance_up);
+    // GPU bytes held across frames (its uniform block; the maps are transient).
+    std::size_t memoryBytes() const { return std::size_t(uniforms_.size()); }
+    // "clouds.shadow": an R16F shadow_size^2 map of the sun's transmittance (1 = clear);
+    // map: what lighting.sun needs to sample it (xy its centre minus the camera, world x/z m,
+    // z 1 / extent (1/m), w the sun's slant max(sun y, 0.05)).
+    TextureHandle addShadowPass(FrameGraph& graph, const RenderContext& rc, glm::vec4& map);
+    // "clouds.shell": the layers over targets.hdr (after "sky.atmosphere"), cut at targets.depth;
+    // with half_resolution into a half-size "clouds.half" that "clouds.composite" upsamples.
+    void addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets);
+
+private:
+    struct Gpu;
+    void bind() const;
+
+    gl::Buffer uniforms_;
+    int shadow_size_ = 256;
+    bool half_resolution_ = true;
+    glm::vec4 shadow_map_{0.0f};
+};
+
+}  // namespace vista

@@ -1,0 +1,170 @@
+// Weather passes: per-frame placement (in double), wind and light for weather.rain and
+// weather.splash; two instanced quad draws with no buffers.
+#include "sky/weather/weather.h"
+
+#include "renderer/bindings.h"
+#include "terrain/terrain.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vista {
+
+std::vector<std::pair<std::string, std::vector<std::string>>> weatherPrograms() {
+    return {{"sky/weather/shaders/weather_rain.glsl", {}},
+            {"sky/weather/shaders/weather_rain.glsl", {"SNOW"}},
+            {"sky/weather/shaders/weather_splash.glsl", {}}};
+}
+
+glm::dvec3 Weather::cameraVelocity(const glm::dvec3& position, double time_s) {
+    glm::dvec3 v(0.0);
+    const double dt = time_s - previous_time_;
+    if (has_previous_ && dt > 0.0 && dt <= 1.0) v = (position - previous_position_) / dt;
+    const double speed = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(speed <= 1000.0)) v = glm::dvec3(0.0);  // a teleport (or NaN), not a motion
+    previous_position_ = position;
+    previous_time_ = time_s;
+    has_previous_ = true;
+    return v;
+}
+
+namespace {
+
+// Blends premultiplied radiance over the HDR colour and keeps its alpha; depth test only.
+void blendState() {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);  // reversed-Z: nearer is greater
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+}
+
+void restoreState() {
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace
+
+void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const WeatherSettings& s,
+                        const CloudsSettings& clouds, const SunAndSky& light, const Terrain* terrain,
+                        const TerrainSettings& ts, SceneTargets& targets, CounterReadback& counters, bool count) {
+    const glm::dvec3 camera_velocity = cameraVelocity(rc.view.position, rc.time_s);
+    stats_ = {};
+    stats_.camera_velocity = camera_velocity;
+    if (s.intensity <= 0.0f) return;  // nothing falls
+    const bool snow = s.kind == WeatherKind::Snow;
+    const double inv_pi = 1.0 / std::numbers::pi;
+    // What a drop sends back: the light around it (sky from above, ground from below) and the sun.
+    const glm::vec3 ambient = float(double(s.brightness) * 0.5 * inv_pi) * (light.sky_up + light.ground_up);
+    const glm::vec3 sun = float(double(s.brightness) * inv_pi) * light.sun_irradiance;
+
+    const DropLayout layout = dropLayout(s);
+    const DropFrame frame = dropFrame(layout, rc.view.position, dropFieldOffset(s, clouds, rc.time_s), rc.time_s);
+    const glm::dvec2 wind = weatherWindVelocity(s, clouds, rc.time_s);
+    const glm::dvec3 relative = glm::dvec3(wind.x, -double(s.drop_speed_m_s), wind.y) - camera_velocity;
+    const glm::vec3 motion(relative);
+    const float opacity = (snow ? 0.8f : 0.5f) * (0.4f + 0.6f * s.intensity);
+    // Cells that can show a drop: widened by the streak (it reaches back from the drop), the
+    // sway and the quad's width.
+    const double reach = std::sqrt(glm::dot(relative, relative)) * double(s.streak_time_s) + (snow ? kSnowSwayM : 0.0) +
+                         double(s.drop_width_m) + 0.05;
+    visibleDropCells(layout, frame, frustumFromViewProj(glm::dmat4(rc.matrices.view_proj)), double(s.radius_m), reach, cells_);
+    const int per_cell = dropsDrawnPerCell(layout, s.intensity);
+    stats_.drop_cells = std::int64_t(cells_.size());
+    stats_.drop_candidates = std::int64_t(cells_.size()) * per_cell;
+    if (cells_.empty() || per_cell == 0) return;
+    const GLsizeiptr bytes = GLsizeiptr(cells_.size() * sizeof(std::uint32_t));
+    if (cell_buffer_.size() < bytes)
+        cell_buffer_ = gl::Buffer::create(std::max<GLsizeiptr>(bytes, GLsizeiptr(layout.cells) * layout.cells * layout.cells * 4),
+                                          nullptr, GL_DYNAMIC_STORAGE_BIT, "weather drop cells");
+    const float keep_below = s.intensity * float(layout.drops_per_cell);
+    const GLsizei instances = GLsizei(stats_.drop_candidates);
+
+    struct Data {
+        TextureHandle hdr, depth;
+    };
+    const Data& rain = graph.addPass<Data>("weather.rain",
+        [&](PassBuilder& b, Data& d) {
+            d.hdr = b.write(targets.hdr);
+            d.depth = b.read(targets.depth);
+        },
+        [this, &rc, &s, &counters, layout, frame, motion, opacity, ambient, sun, snow, count, per_cell, keep_below,
+         instances](const Data& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.hdr)}, ctx.texture(d.depth)), desc.width, desc.height);
+            GLuint program = rc.shaders.get("sky/weather/shaders/weather_rain.glsl", snow ? std::vector<std::string>{"SNOW"}
+                                                                                  : std::vector<std::string>{})->id();
+            glUseProgram(program);
+            glProgramUniform4i(program, 0, frame.box_min.x, frame.box_min.y, frame.box_min.z, layout.cells);
+            glProgramUniform4i(program, 1, layout.half, per_cell, count ? 1 : 0, 0);
+            glProgramUniform4f(program, 2, frame.frac.x, frame.frac.y, frame.frac.z, float(layout.cell_m));
+            glProgramUniform4f(program, 3, motion.x, motion.y, motion.z, s.streak_time_s);
+            glProgramUniform4f(program, 4, s.radius_m, s.near_fade_m, s.drop_width_m, keep_below);
+            glProgramUniform4f(program, 5, ambient.r, ambient.g, ambient.b, opacity);
+            glProgramUniform4f(program, 6, sun.r, sun.g, sun.b, 0.0f);
+            glProgramUniform4f(program, 7, float(kSnowSwayM), frame.sway_phase, float(2.0 * std::numbers::pi * kSnowSwayHz), 0.0f);
+            glNamedBufferSubData(cell_buffer_.id(), 0, GLsizeiptr(cells_.size() * sizeof(std::uint32_t)), cells_.data());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kWeatherCells, cell_buffer_.id());
+            if (count)
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "weather.drops"));
+            glBindVertexArray(rc.empty_vao);
+            blendState();
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
+            restoreState();
+        });
+    targets.hdr = rain.hdr;
+
+    if (snow || !s.splashes || !terrain || s.splash_rate <= 0.0f) return;
+    // No splash within reach when the ground under the camera is farther than splash_radius_m
+    // (flying; a slope nearer than that under a high camera is rare and only loses far splashes).
+    const glm::dvec3 eye = rc.view.position;
+    if (std::abs(eye.y - terrain->heightAt(eye.x, eye.z)) > double(s.splash_radius_m)) return;
+    const SplashLayout sl = splashLayout(s);
+    const double kept = splashesKept(sl, s);
+    const int slots = std::min(sl.slots, int(std::ceil(kept)));
+    if (slots == 0) return;
+    stats_.splash_candidates = std::int64_t(sl.cells) * sl.cells * slots;
+    const SplashFrame sf = splashFrame(sl, glm::dvec2(rc.view.position.x, rc.view.position.z), rc.time_s);
+    const float splash_keep = float(kept);
+    const Data& splash = graph.addPass<Data>("weather.splash",
+        [&](PassBuilder& b, Data& d) {
+            d.hdr = b.write(targets.hdr);
+            d.depth = b.read(targets.depth);
+        },
+        [this, &rc, &s, &ts, &counters, terrain, sl, sf, slots, splash_keep, ambient, sun, count](const Data& d,
+                                                                                                 PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.hdr)}, ctx.texture(d.depth)), desc.width, desc.height);
+            GLuint program = rc.shaders.get("sky/weather/shaders/weather_splash.glsl")->id();
+            glUseProgram(program);
+            const TerrainMapping& m = terrain->mapping();
+            const glm::dvec3 rel = rc.view.position - ts.origin;
+            glProgramUniform2i(program, 0, sf.box_min.x, sf.box_min.y);
+            glProgramUniform4i(program, 1, sl.cells, sl.half, slots, count ? 1 : 0);
+            glProgramUniform4f(program, 2, sf.frac.x, sf.frac.y, sf.cycle_frac, splash_keep);
+            glProgramUniform1ui(program, 3, sf.cycle);
+            glProgramUniform4f(program, 4, s.splash_size_m, s.splash_radius_m, 0.2f + 0.25f * s.intensity, float(kSplashCellM));
+            glProgramUniform4f(program, 5, ambient.r, ambient.g, ambient.b, 0.0f);
+            glProgramUniform4f(program, 6, sun.r, sun.g, sun.b, 0.0f);
+            glProgramUniform2f(program, 7, float(-m.size_m * 0.5 - rel.x), float(-m.size_m * 0.5 - rel.z));
+            glProgramUniform2f(program, 8, float(m.texelSizeX()), float(m.texelSizeZ()));
+            glProgramUniform2f(program, 9, float(m.height_scale_m), float(m.height_offset_m - rel.y));
+            terrain->bindTiles(program, 10);
+            glBindTextureUnit(binding::kTex0, terrain->heightTexture());
+            if (count)
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "weather.splashes"));
+            glBindVertexArray(rc.empty_vao);
+            blendState();
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(stats_.splash_candidates));
+            restoreState();
+        });
+    targets.hdr = splash.hdr;
+}
+
+}  // namespace vista

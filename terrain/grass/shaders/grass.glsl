@@ -1,0 +1,95 @@
+// "grass.gbuffer": the blades grass.cull kept, one triangle strip each (2 vertices per
+// segment level and one at the tip), drawn by two indirect draws: near blades with
+// u_segments segments, far ones with fewer. Each segment is the rest segment rotated toward
+// the bend direction by an angle growing along the blade, so bending keeps the blade's length
+// (grass_placement.cpp grassBladePoint is the CPU mirror). Writes the G-buffer like the
+// terrain; the shading normal is blended toward the terrain normal so a meadow seen from
+// above shades like the ground it covers. SHADOW_PASS: the same blades depth-only into a shadow
+// view (sun cascades, spot shadow atlas).
+#include "../../../renderer/shaders/common.glsl"
+#include "../../../renderer/shaders/gbuffer.glsl"
+#include "grass_common.glsl"
+
+layout(std430, binding = BINDING_GRASS_BLADES) readonly buffer Blades { GrassBlade u_blades[]; };
+layout(location = 0) uniform int u_segments;     // segments of this draw's blades
+layout(location = 1) uniform uint u_first;       // index of this draw's first blade in u_blades
+layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, wetness (0 dry .. 1)
+
+#ifdef VERTEX_SHADER
+#ifdef SHADOW_PASS
+// A shadow view (sun cascade or spot tile): camera-relative world -> clip.
+layout(location = 16) uniform mat4 u_shadow_matrix;
+#endif
+out vec3 v_normal;           // blade normal (world, one side)
+flat out vec3 v_ground;      // terrain normal
+out vec3 v_albedo;
+
+void main() {
+    GrassBlade b = u_blades[u_first + uint(gl_InstanceID)];
+    int n = u_segments;
+    int level = min(gl_VertexID / 2, n);
+    bool tip = gl_VertexID >= 2 * n;
+    float side = tip ? 0.0 : (gl_VertexID % 2 == 0 ? -1.0 : 1.0);
+    float len = b.shape.x;
+    float tip_angle = min(length(b.shape.zw), 1.4);
+    vec2 dir = length(b.shape.zw) > 1e-6 ? b.shape.zw / length(b.shape.zw) : vec2(0.0, 1.0);
+    vec3 bend_dir = vec3(dir.x, 0.0, dir.y);
+    // Root to this level: the sum of rotated unit segments (length preserved).
+    vec3 p = vec3(0.0);
+    float seg = len / float(n);
+    float theta = 0.0;
+    for (int j = 0; j < level; ++j) {
+        float s = (float(j) + 0.5) / float(n);
+        theta = tip_angle * s * sqrt(s);
+        p += seg * (vec3(0.0, cos(theta), 0.0) + sin(theta) * bend_dir);
+    }
+    float s_here = (float(min(level, n - 1)) + 0.5) / float(n);
+    float theta_here = tip_angle * s_here * sqrt(s_here);
+    vec3 tangent = vec3(0.0, cos(theta_here), 0.0) + sin(theta_here) * bend_dir;
+    vec3 across = vec3(cos(b.shape.y), 0.0, sin(b.shape.y));
+    float s = float(level) / float(n);
+    float width = b.root_width.w * (1.0 - pow(s, 1.3));
+    p += across * (0.5 * side * width);
+
+    vec3 normal = safeNormalize(cross(across, tangent));
+    // A little roundness across the blade.
+    v_normal = safeNormalize(normal + across * (0.35 * side));
+    v_ground = safeNormalize(unpackSnorm4x8(b.look.y).xyz);
+    vec3 tip_albedo = unpackUnorm4x8(b.look.x).rgb;
+    v_albedo = tip_albedo * tip_albedo * mix(1.0 - u_look.x, 1.0, s);
+#ifdef SHADOW_PASS
+    gl_Position = u_shadow_matrix * vec4(b.root_width.xyz + p, 1.0);
+#else
+    gl_Position = u_view_proj * vec4(b.root_width.xyz + p, 1.0);
+#endif
+}
+#endif
+
+#if defined(FRAGMENT_SHADER) && defined(SHADOW_PASS)
+void main() {}  // depth only
+#endif
+
+#if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS)
+in vec3 v_normal;
+flat in vec3 v_ground;
+in vec3 v_albedo;
+layout(location = 0) out vec4 o_color;   // emissive radiance: none
+layout(location = 1) out vec4 o_albedo;
+layout(location = 2) out vec4 o_normal;
+
+void main() {
+    vec3 n = safeNormalize(gl_FrontFacing ? v_normal : -v_normal);
+    // Toward the terrain normal: from above a blade shades like the ground it covers, and the
+    // back of a blade never turns fully away from the sky.
+    n = safeNormalize(mix(n, v_ground, u_look.z));
+    Surface surface;
+    // Wet blades ([weather] rain): a water film darkens them a little and makes them glossy.
+    surface.albedo = v_albedo * (1.0 - 0.3 * u_look.w);
+    surface.roughness = mix(u_look.y, 0.2, u_look.w);
+    surface.normal = n;
+    surface.f0 = 0.04;
+    surface.lit = true;
+    encodeSurface(surface, o_albedo, o_normal);
+    o_color = vec4(0.0, 0.0, 0.0, 1.0);
+}
+#endif

@@ -1,0 +1,100 @@
+// The sea in the frame (Gerstner waves: terrain/water/waves.h). After the deferred lighting and before
+// the aerial perspective and the sky:
+//   "water.copy"       the opaque HDR and depth, copied (refraction and reflection read them
+//                      while the surface pass writes the targets);
+//   "water.surface"    the displaced ring grid around the camera, shaded forward (reflection,
+//                      refraction with absorption, foam, sun glitter, the sun through its
+//                      cascaded shadows, the sky and the culled local lights), writing colour and depth so that the aerial
+//                      perspective fogs it and the sky stays behind it;
+// and after the sky, when the camera may be under the surface:
+//   "water.underwater" absorption and scattering between the eye and each pixel.
+// Only exists while [water] is enabled (the frame drops it otherwise: no pass, no buffers).
+#pragma once
+
+#include "config/settings.h"
+#include "renderer/frame_graph.h"
+#include "renderer/gl/objects.h"
+#include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
+#include "renderer/shadows/sun_shadows.h"
+#include "terrain/water/waves.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vista {
+
+class LocalLights;
+class SkyAtmosphere;
+
+// The light the water is lit by (renderer/lighting/deferred.h SunAndSky), RGB in HDR units.
+struct WaterLight {
+    glm::vec3 sun_irradiance{0.0f};
+    glm::vec3 sky_up{0.0f};
+    glm::vec3 ground_up{0.0f};
+};
+
+// The camera-centred ring grid for an eye h metres above (or below) the still surface: ring j
+// at radius c (e^(a j) - 1), a = 2 pi / segments, c = max(grid_cell_m, 0.01 h) / a, rings out
+// to max_distance_m.
+struct WaterGrid {
+    int segments = 0, rings = 0;
+    double ring_constant = 0.0;  // c, m
+    double angle = 0.0;          // a, rad
+};
+WaterGrid waterGrid(const WaterSettings& s, double height_above_m);
+
+struct WaterStats {
+    std::uint64_t vertices = 0, triangles = 0;  // of the grid drawn this frame
+    int waves = 0;
+    bool underwater = false;    // the eye is below the surface at its own x, z
+    bool near_surface = false;  // the eye may be below the surface somewhere on the near plane: water.underwater runs
+    double surface_height_m = 0.0;  // world height of the surface at the eye's x, z
+};
+
+class Water {
+public:
+    // The CPU side of a frame: wave set (rebuilt when the settings change), grid, uniforms.
+    // ground_m: the terrain's height at the eye's x, z (NaN: no terrain); an eye on ground above
+    // the waves' reach is never under water.
+    // rain_ripples: intensity (0..1) of the rain's rings on the surface (sky/weather/shaders/rain_ripples.glsl), 0: none.
+    void prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
+                 const SkyAtmosphere* sky, double ground_m, float rain_ripples = 0.0f);
+    // water.copy and water.surface over targets (hdr and depth). sky: this frame's atmosphere
+    // after addLutPasses (null: no sky); lights: the local lights whose passes ran this frame
+    // (null: none) — their lists must cover forward depths (LightPassOptions::forward).
+    // shadows: this frame's sun cascades (invalid: none).
+    void addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
+                          const LocalLights* lights, const SunShadowInput& shadows);
+    // water.underwater over targets.hdr when stats().near_surface (after the sky).
+    void addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
+
+    const WaterStats& stats() const { return stats_; }
+    std::size_t memoryBytes() const { return std::size_t(indices_.size()) + std::size_t(uniforms_.size()); }  // GPU bytes held
+    const WaveSet& waves() const { return waves_; }
+    // The uniform block as uploaded this frame (tests bind it for probes).
+    GLuint uniformBuffer() const { return uniforms_.id(); }
+
+private:
+    struct Uniforms;
+    void buildGrid(int segments, int rings);
+
+    WaterSettings waves_for_{};
+    bool have_waves_ = false;
+    WaveSet waves_;
+    WaterGrid grid_;
+    int built_segments_ = 0, built_rings_ = 0;
+    gl::VertexArray vao_;
+    gl::Buffer indices_, uniforms_;
+    WaterStats stats_;
+    WaterView view_ = WaterView::Shaded;  // as prepared: the surface program's WATER_VIEW variant
+};
+
+// Every program the water uses (for FrameRenderer::allPrograms()).
+std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms();
+
+}  // namespace vista
