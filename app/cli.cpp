@@ -16,7 +16,9 @@
 #include "app/quality.h"
 #include "app/run_window.h"
 #include "app/scene.h"
+#include "app/light_placement.h"
 #include "app/scene_check.h"
+#include "terrain/terrain.h"
 #include "terrain/gen_heightmap.h"
 
 #include <CLI/CLI.hpp>
@@ -243,10 +245,17 @@ int check(const SceneOptions& scene) {
     const std::filesystem::path file = scene.file();
     InputErrors errors = loadScene(scene.files(), scene.overrides, s);
     // Everything a capture validates before rendering, without a GL context.
+    InputErrors warnings;
     if (errors.empty()) {
-        InputErrors more = validateSceneInputs(s);
+        Heightmap map;
+        InputErrors more = validateSceneInputs(s, &map);
         errors.insert(errors.end(), more.begin(), more.end());
+        GroundHeight terrain;
+        if (!map.samples.empty())
+            terrain = [&map, &t = s.terrain](double x, double z) { return terrainHeightAt(map, t, x, z); };
+        warnings = checkLightPlacement(s, terrain, scene.files(), scene.overrides);
     }
+    for (const InputError& w : warnings) std::fprintf(stderr, "vista: warning: %s\n", w.str().c_str());
     CameraPath::load(resolveInput(s.capture.path), errors, s.camera.fov_deg);
     printErrors(errors);
     if (!errors.empty()) {

@@ -8,6 +8,7 @@
 #include "renderer/debug_view.h"
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
+#include "app/light_placement.h"
 #include "app/scene.h"
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
@@ -243,9 +244,14 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
         local_lights_.reset();  // no local lights: no passes, no buffers
         return false;
     }
+    // LocalLights re-collects when the entries change; the sea they stand on is ours to watch.
+    const std::pair<bool, float> water{s.water.enabled, s.water.level_m};
+    if (water != light_water_) local_lights_.reset();
+    light_water_ = water;
     if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
-    GroundHeight ground;
-    if (terrain_) ground = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
+    GroundHeight terrain;
+    if (terrain_) terrain = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
+    const GroundHeight ground = lightGround(terrain, s.water);  // the sea's surface where it covers the terrain
     const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground);
     const LocalLightStats& st = local_lights_->stats();
     report.counters["lights.count"] = double(st.count);

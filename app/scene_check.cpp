@@ -7,12 +7,13 @@
 
 namespace vista {
 
-InputErrors validateSceneInputs(const Settings& s) {
+InputErrors validateSceneInputs(const Settings& s, Heightmap* map) {
     InputErrors errors;
     if (s.terrain.enabled) {
         TerrainSettings wanted = s.terrain;
         wanted.heightmap = resolveInput(s.terrain.heightmap).string();
-        Terrain::loadChecked(wanted, errors);  // the same function Terrain::load runs
+        Heightmap checked = Terrain::loadChecked(wanted, errors);  // the same function Terrain::load runs
+        if (map) *map = std::move(checked);
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare
     return errors;

@@ -4,9 +4,11 @@
 
 #include "config/input_error.h"
 #include "config/settings.h"
+#include "terrain/heightmap.h"
 
 namespace vista {
 
-InputErrors validateSceneInputs(const Settings& s);
+// map (optional) receives the checked heightmap when the terrain is on and valid.
+InputErrors validateSceneInputs(const Settings& s, Heightmap* map = nullptr);
 
 }  // namespace vista

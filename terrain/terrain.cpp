@@ -212,6 +212,13 @@ bool Terrain::matches(const TerrainSettings& s) const {
            s.height_offset_m == source_.height_offset_m && s.grid == source_.grid;
 }
 
+double terrainHeightAt(const Heightmap& map, const TerrainSettings& s, double x, double z) {
+    const TerrainMapping mapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
+    double tx = (x - s.origin.x + mapping.size_m * 0.5) / mapping.texelSizeX();
+    double tz = (z - s.origin.z + mapping.size_m * 0.5) / mapping.texelSizeZ();
+    return s.origin.y + mapping.height_offset_m + mapping.height_scale_m * map.sample(tx, tz);
+}
+
 double Terrain::heightAt(double x, double z) const {
     double tx = (x - source_.origin.x + mapping_.size_m * 0.5) / mapping_.texelSizeX();
     double tz = (z - source_.origin.z + mapping_.size_m * 0.5) / mapping_.texelSizeZ();

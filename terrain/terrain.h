@@ -44,6 +44,10 @@ struct TerrainTiles {
     glm::ivec2 layer{1};  // texels per layer
 };
 
+// Ground height (m) of a heightmap placed by s (size, height scale and offset, origin) at world
+// x/z, bilinear, clamped to the map's edge outside it: Terrain::heightAt() without GL (`vista check`).
+double terrainHeightAt(const Heightmap& map, const TerrainSettings& s, double x, double z);
+
 class Terrain {
 public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
