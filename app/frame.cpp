@@ -13,6 +13,8 @@
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
 #include "sky/atmosphere.h"
+#include "sky/day_cycle.h"
+#include "sky/night_light.h"
 #include "sky/clouds/cloud_model.h"
 #include "sky/clouds/clouds.h"
 #include "sky/weather/weather.h"
@@ -109,18 +111,20 @@ void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
 }
 
 RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
-    RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
+    RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s, pre_exposure_};
     FrameUniforms u{};
     u.view = rc.matrices.view;
     u.proj = rc.matrices.proj;
     u.view_proj = rc.matrices.view_proj;
     u.inv_view_proj = rc.matrices.inv_view_proj;
     u.camera_world = glm::vec4(glm::vec3(view.position), 1.0f);
-    glm::dvec3 sun = sunDirection(settings.sky);
-    u.sun_dir = glm::vec4(glm::vec3(sun), settings.sky.sun_illuminance);
+    // The key light (the sun, or the moon at night) is the one directional light the passes shade.
+    const glm::dvec3 key = sky_lighting_.get(settings.sky, view.position).keyDirection();
+    u.sun_dir = glm::vec4(glm::vec3(key), settings.sky.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
     u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
+    u.exposure = glm::vec4(float(pre_exposure_), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frame_uniforms_.id());
     return rc;
@@ -252,7 +256,7 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
     GroundHeight terrain;
     if (terrain_) terrain = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
     const GroundHeight ground = lightGround(terrain, s.water);  // the sea's surface where it covers the terrain
-    const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground);
+    const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground, float(pre_exposure_));
     const LocalLightStats& st = local_lights_->stats();
     report.counters["lights.count"] = double(st.count);
     report.counters["lights.visible"] = double(st.visible);
@@ -288,7 +292,22 @@ void FrameRenderer::resetHistory() {
     weather_.reset();  // its previous camera (streak velocity); recreated by the next frame with weather
 }
 
-FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
+FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view, double time_s,
+                                  const FrameRequest& request) {
+    // Pre-exposure (sky/night_light.h): every light of the frame scaled so that a night's radiances
+    // stay inside the half-float target. The sky's lights all scale with sun_illuminance; the local
+    // lights take the factor at upload (LocalLights::prepare) and auto exposure divides it out.
+    // The day/night cycle ([sky] time_scale) first: the sky of this scene time.
+    const SkySettings sky = skyAtTime(input.sky, time_s);
+    pre_exposure_ = sky.enabled ? preExposure(sky_lighting_.get(sky, view.position).upLux(sky.sun_illuminance)) : 1.0;
+    const bool adjusted = pre_exposure_ != 1.0 || sky.time_of_day_h != input.sky.time_of_day_h;
+    Settings scaled;
+    if (adjusted) {
+        scaled = input;
+        scaled.sky = sky;
+        scaled.sky.sun_illuminance = float(double(sky.sun_illuminance) * pre_exposure_);
+    }
+    const Settings& s = adjusted ? scaled : input;
     RenderContext rc = context(view, s, time_s);
     FrameGraph graph;
 
@@ -450,6 +469,10 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
     if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
     if (const std::size_t postfx = postfx_.memoryBytes(); postfx > 0) report.counters["postfx.memory_bytes"] = double(postfx);
+    report.counters["sky.pre_exposure"] = pre_exposure_;
+    if (s.sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
+    report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
+    report.counters["sky.lux"] = sky_lighting_.get(s.sky, view.position).upLux(s.sky.sun_illuminance);  // physical: the scaled units cancel
     report.counters["gpu.transient_bytes"] = double(pool_.bytes());
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
     return report;

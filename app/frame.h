@@ -141,7 +141,8 @@ private:
     std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
     std::unique_ptr<Clouds> clouds_;      // null while [clouds] draws nothing
     std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
-    std::pair<bool, float> light_water_{false, 0.0f};  // [water] enabled, level_m the lights were placed over
+    std::pair<bool, float> light_water_{false, 0.0f};
+    double pre_exposure_ = 1.0;  // this frame's (sky/night_light.h), set by render()  // [water] enabled, level_m the lights were placed over
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)

@@ -271,6 +271,14 @@ void Panel::drawStats(const PanelStats& st) {
         }
         ImGui::EndTable();
     }
+    // The day/night cycle ([sky] time_scale) and the light it gives, live.
+    const auto counter = [&st](const char* name) {
+        const auto it = st.counters.find(name);
+        return it == st.counters.end() ? std::nan("") : it->second;
+    };
+    if (const double h = counter("sky.time_of_day_h"); std::isfinite(h))
+        ImGui::Text("time of day %02d:%02d  sun %.1f deg  %.3g lx  pre-exposure %.3g", int(h), int(std::fmod(h, 1.0) * 60.0),
+                    counter("sky.sun_elevation_deg"), counter("sky.lux"), counter("sky.pre_exposure"));
     for (const auto& [name, value] : st.counters) ImGui::Text("%s: %.6g", name.c_str(), value);
     ImGui::Text("transient targets: %zu", st.pool_textures);
     if (!st.culled.empty()) {

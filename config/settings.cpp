@@ -151,6 +151,8 @@ void describe(SettingsVisitor& v, SkySettings& s) {
     v.field({"time_of_day_h", "h", "apparent solar time, 12 = noon (sun_mode = time)"}, s.time_of_day_h, 0.0f, 24.0f);
     v.field({"latitude_deg", "deg", "latitude, north positive (sun_mode = time)"}, s.latitude_deg, -90.0f, 90.0f);
     v.field({"day_of_year", "day", "1 = 1 January (sun_mode = time)"}, s.day_of_year, 1.0f, 366.0f);
+    v.field({"time_scale", "h/s", "day/night cycle: hours of time of day per second of scene time (sun_mode = time; 0 still)"},
+            s.time_scale, -1000.0f, 1000.0f);
     v.field({"sun_illuminance", "", "HDR scale of the solar irradiance at the top of the atmosphere"}, s.sun_illuminance, 0.0f, 1000.0f);
     v.field({"sun_angular_radius_deg", "deg", "radius of the drawn sun disk"}, s.sun_angular_radius_deg, 0.05f, 5.0f);
     v.field({"sun_limb_darkening", "", "limb darkening u: I = 1 - u (1 - cos)"}, s.sun_limb_darkening, 0.0f, 1.0f);
@@ -229,8 +231,8 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
 }
 
 void describe(SettingsVisitor& v, PostfxSettings& s) {
-    static constexpr std::array<const char*, 9> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
-                                                        "motion_blur", "lens_flare", "night_vision"};
+    static constexpr std::array<const char*, 10> effects{"bloom", "exposure", "tonemap", "fxaa", "grade", "dof",
+                                                        "motion_blur", "lens_flare", "night_vision", "scotopic"};
     v.section("postfx", "post-processing chain");
     v.field({"enabled", "", "run the post chain (off: clamp and sRGB only)"}, s.enabled);
     v.sequence({"order", "", "effects in the order they run; before tonemap on linear HDR, after it on the display image"},
@@ -243,8 +245,9 @@ void describe(SettingsVisitor& v, ExposureSettings& s) {
     v.field({"enabled", "", "apply exposure"}, s.enabled);
     v.choice({"mode", "", "manual: scale 2^ev; auto: metered average to middle grey (0.18), times 2^ev"}, s.mode, modes);
     v.field({"ev", "stops", "exposure compensation, scale 2^ev"}, s.ev, -20.0f, 20.0f);
-    v.field({"min_ev", "stops", "auto: lowest metered log2 luminance (darker scenes stay dark)"}, s.min_ev, -20.0f, 20.0f);
-    v.field({"max_ev", "stops", "auto: highest metered log2 luminance (brighter scenes stay bright)"}, s.max_ev, -20.0f, 20.0f);
+    v.field({"min_ev", "stops", "auto: lowest metered log2 luminance in [sky] sun_illuminance units (darker scenes stay dark)"}, s.min_ev, -40.0f, 20.0f);
+    v.field({"max_ev", "stops", "auto: highest metered log2 luminance (brighter scenes stay bright)"}, s.max_ev, -40.0f, 20.0f);
+    v.field({"night_ev", "stops", "auto: darker than middle grey by this at scotopic adaptation (< 0.005 cd/m^2), none above 5 cd/m^2"}, s.night_ev, 0.0f, 10.0f);
     v.field({"low_percent", "%", "auto: darkest share of pixels left out of the average"}, s.low_percent, 0.0f, 99.0f);
     v.field({"high_percent", "%", "auto: percentile above which pixels are left out of the average"}, s.high_percent, 1.0f, 100.0f);
     v.field({"speed_up", "1/s", "auto: adaptation rate towards brighter (difference falls by e in 1/rate s)"}, s.speed_up, 0.01f, 100.0f);
@@ -288,6 +291,14 @@ void describe(SettingsVisitor& v, GradeSettings& s) {
     v.field({"grain", "", "film grain amplitude at mid-grey (none at black and white)"}, s.grain, 0.0f, 1.0f);
     v.field({"grain_rate", "1/s", "new grain pattern this many times per second of scene time"}, s.grain_rate, 0.0f, 1000.0f);
     v.field({"lut", "", "optional 3D LUT (.cube file), applied after saturation; empty: none"}, s.lut);
+}
+
+void describe(SettingsVisitor& v, ScotopicSettings& s) {
+    v.section("postfx.scotopic", "scotopic vision at night: rods' luminance, blue shift, loss of acuity, below 5 cd/m^2");
+    v.field({"enabled", "", "apply on frames whose sky gives less than 400 lx"}, s.enabled);
+    v.field({"blue_shift", "", "share of the rods' blue tint (0: grey)"}, s.blue_shift, 0.0f, 1.0f);
+    v.field({"acuity_arcmin", "arcmin", "blur radius at full scotopic vision"}, s.acuity_arcmin, 0.0f, 60.0f);
+    v.field({"show_rod_share", "", "debug: show the rods' share per pixel as grey"}, s.show_rod_share);
 }
 
 void describe(SettingsVisitor& v, NightVisionSettings& s) {
@@ -478,6 +489,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.motion_blur);
     describe(v, s.lens_flare);
     describe(v, s.night_vision);
+    describe(v, s.scotopic);
 }
 
 }  // namespace vista

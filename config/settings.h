@@ -143,6 +143,8 @@ struct SkySettings {
     float time_of_day_h = 10.0f;     //!< h, apparent local solar time (12 = sun on the meridian), 0..24
     float latitude_deg = 45.0f;      //!< deg, north positive, -90..90
     float day_of_year = 172.0f;      //!< day, 1 = 1 January (fractional allowed), 1..366
+    //! h of time of day per s of scene time (sun_mode = time; 0: still, 1: a day in 24 s), -1000..1000
+    float time_scale = 0.0f;
     float sun_illuminance = 3.0f;    //!< HDR units: solar irradiance at the top of the atmosphere, 0..1000
     float sun_angular_radius_deg = 0.2679f;  //!< deg, drawn sun disk (0.27 = real), 0.05..5
     float sun_limb_darkening = 0.6f; //!< u of I = 1 - u (1 - cos), 0..1
@@ -262,7 +264,7 @@ struct WeatherSettings {
 };
 
 //! The post-processing effects that [postfx] order can list; each has a [postfx.NAME] section.
-enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare, NightVision };
+enum class PostEffect : int { Bloom, Exposure, Tonemap, Fxaa, Grade, Dof, MotionBlur, LensFlare, NightVision, Scotopic };
 
 struct PostfxSettings {
     bool enabled = true;  //!< off: the HDR image is only clamped and sRGB-encoded
@@ -270,7 +272,7 @@ struct PostfxSettings {
     //! effects after it the display (sRGB) image. Without `tonemap` (or with it disabled) the
     //! chain still ends with a clamp and the sRGB encoding.
     std::vector<PostEffect> order{PostEffect::MotionBlur, PostEffect::Dof,      PostEffect::Bloom,
-                                  PostEffect::LensFlare,  PostEffect::Exposure, PostEffect::Tonemap,
+                                  PostEffect::LensFlare,  PostEffect::Scotopic, PostEffect::Exposure, PostEffect::Tonemap,
                                   PostEffect::Grade,      PostEffect::NightVision, PostEffect::Fxaa};
 };
 
@@ -282,8 +284,11 @@ struct ExposureSettings {
     bool enabled = true;
     ExposureMode mode = ExposureMode::Auto;
     float ev = 0.0f;              //!< stops of compensation (manual: scale = 2^ev), -20..20
-    float min_ev = -16.0f;        //!< auto: lowest metered log2 luminance (darker scenes stay darker), -20..20
-    float max_ev = 16.0f;         //!< auto: highest metered log2 luminance, -20..20
+    float min_ev = -32.0f;        //!< auto: lowest metered log2 luminance (darker scenes stay darker; -32: a moonless night), -40..20
+    float max_ev = 16.0f;         //!< auto: highest metered log2 luminance, -40..20
+    //! auto: stops darker than middle grey once the adapted luminance is scotopic (below
+    //! 0.005 cd/m^2; none above 5 cd/m^2, log-smooth between): night reads as night, 0..10
+    float night_ev = 2.5f;
     float low_percent = 40.0f;    //!< auto: darkest pixels left out of the average, % of the histogram, 0..99
     float high_percent = 95.0f;   //!< auto: pixels above this percentile left out (highlights), 1..100
     float speed_up = 3.0f;        //!< auto: adaptation rate towards a brighter scene, stops settle by e per 1/rate s, 0.01..100
@@ -328,6 +333,18 @@ struct GradeSettings {
     float grain = 0.0f;            //!< film grain amplitude at mid-grey (fades to 0 at black and white), 0..1
     float grain_rate = 24.0f;      //!< 1/s, new grain pattern this many times per second of scene time, 0..1000
     std::string lut;               //!< optional 3D LUT (.cube), relative to the vista root; applied after saturation
+};
+
+//! Scotopic vision (postfx/scotopic.h): below mesopic luminance the rods take over from the
+//! cones: colour fades to the rods' luminance with a blue shift (Krawczyk et al. 2005) and
+//! detail blurs (acuity). Per pixel, by its luminance in cd/m^2: none from 5 cd/m^2 up, all
+//! at 0.005 and below (CIE mesopic range). Runs on linear HDR (before exposure) and only on
+//! frames whose sky gives less than 400 lx (sky/night_light.h kPreExposureLux).
+struct ScotopicSettings {
+    bool enabled = true;
+    float blue_shift = 1.0f;       //!< share of the rods' blue tint (0: grey), 0..1
+    float acuity_arcmin = 10.0f;   //!< arcmin, detail lost at full scotopic vision (blur radius), 0..60
+    bool show_rod_share = false;   //!< debug: the rods' share per pixel as grey, instead of the image
 };
 
 //! Night vision (as 000's): luminance amplified, noise, a green phosphor tint and a round
@@ -498,6 +515,7 @@ struct Settings {
     MotionBlurSettings motion_blur;  // [postfx.motion_blur]
     LensFlareSettings lens_flare;    // [postfx.lens_flare]
     NightVisionSettings night_vision;  // [postfx.night_vision]
+    ScotopicSettings scotopic;         // [postfx.scotopic]
 };
 
 // Lists every section and field of s to v, in file order.

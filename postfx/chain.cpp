@@ -6,7 +6,9 @@
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
 #include "postfx/lut.h"
+#include "postfx/scotopic.h"
 #include "sky/atmosphere.h"
+#include "sky/night_light.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
@@ -52,10 +54,13 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 flush();
                 if (s.exposure.mode == ExposureMode::Auto) {
                     if (!auto_exposure_) auto_exposure_ = std::make_unique<AutoExposure>();
-                    exposure = auto_exposure_->addPasses(graph, rc, image, s.exposure, dt, reset);
+                    // cd/m^2 per HDR unit without the pre-exposure (s.sky carries it: sky/night_light.h).
+                    exposure = auto_exposure_->addPasses(graph, rc, image, s.exposure, dt, reset,
+                                                         luxPerHdrUnit(s.sky.sun_illuminance) * rc.pre_exposure);
                     uses_auto = true;
                 } else {
                     exposure = manualExposure(s.exposure);
+                    exposure.manual /= float(rc.pre_exposure);  // a fixed exposure of the light itself
                 }
                 break;
             case PostEffect::Tonemap:
@@ -91,6 +96,12 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, sunDirection(s.sky),
                                                s.sky.sun_illuminance, dt, reset);
                 uses_flare = true;
+                break;
+            case PostEffect::Scotopic:
+                // Only on frames whose sky is dim enough to be pre-exposed (below 400 lx).
+                if (!s.scotopic.enabled || display || !(rc.pre_exposure > 1.0)) break;
+                flush();
+                image = addScotopicPass(graph, rc, image, s.scotopic, luxPerHdrUnit(s.sky.sun_illuminance));
                 break;
             case PostEffect::NightVision:
                 if (!s.night_vision.enabled) break;
@@ -138,7 +149,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
     std::vector<std::pair<std::string, std::vector<std::string>>> programs;
     for (auto list :
          {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
-          motionBlurPrograms(), lensFlarePrograms()})
+          motionBlurPrograms(), lensFlarePrograms(), scotopicPrograms()})
         programs.insert(programs.end(), list.begin(), list.end());
     return programs;
 }

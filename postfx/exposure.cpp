@@ -3,6 +3,8 @@
 // not swing it, and exponential adaptation whose rate is per second, not per frame.
 #include "postfx/exposure.h"
 
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,7 +25,7 @@ postfx::ExposureState AutoExposure::read() const {
 ExposureInput manualExposure(const ExposureSettings& s) { return {true, std::exp2(s.ev), {}}; }
 
 ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
-                                      const ExposureSettings& s, double dt_s, bool reset) {
+                                      const ExposureSettings& s, double dt_s, bool reset, double cd_per_unit) {
     struct HistogramData {
         TextureHandle image;
         BufferHandle histogram;
@@ -56,12 +58,14 @@ ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc
     const float min_ev = std::min(s.min_ev, s.max_ev), max_ev = s.max_ev;
     const float up = s.speed_up, down = s.speed_down, compensation = std::exp2(s.ev);
     const float dt = float(std::clamp(dt_s, 0.0, 1e6));
+    const glm::vec3 units(float(std::log2(std::max(rc.pre_exposure, 1e-30))), float(std::log2(std::max(cd_per_unit, 1e-30))),
+                          s.night_ev);
     const AdaptData& a = graph.addPass<AdaptData>("postfx.exposure.adapt",
         [&](PassBuilder& b, AdaptData& d) {
             d.histogram = b.read(h.histogram);
             d.state = b.write(state);
         },
-        [&rc, low, high, min_ev, max_ev, up, down, compensation, dt, reset](const AdaptData& d, PassContext& ctx) {
+        [&rc, low, high, min_ev, max_ev, up, down, compensation, dt, reset, units](const AdaptData& d, PassContext& ctx) {
             GLuint program = rc.shaders.get("postfx/shaders/exposure_adapt.glsl")->id();
             glUseProgram(program);
             glProgramUniform2f(program, 0, low, high);
@@ -70,6 +74,7 @@ ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc
             glProgramUniform1f(program, 3, dt);
             glProgramUniform1f(program, 4, reset ? 1.0f : 0.0f);
             glProgramUniform1f(program, 5, compensation);
+            glProgramUniform3f(program, 6, units.x, units.y, units.z);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kHistogramBinding, ctx.buffer(d.histogram));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kExposureBinding, ctx.buffer(d.state));
             glDispatchCompute(1, 1, 1);

@@ -27,9 +27,11 @@ class AutoExposure {
 public:
     AutoExposure();
     // Meters image and adapts: dt_s is the time since the last metered frame; reset takes the
-    // metered value at once (first frame, time jumped back).
+    // metered value at once (first frame, time jumped back). image holds radiance times
+    // rc.pre_exposure, cd_per_unit cd/m^2 per HDR unit before it (sky/night_light.h
+    // luxPerHdrUnit); the state is kept in HDR units without the pre-exposure.
     ExposureInput addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const ExposureSettings& s,
-                            double dt_s, bool reset);
+                            double dt_s, bool reset, double cd_per_unit);
     // Reads the state back from the GPU (tests, panel; stalls).
     postfx::ExposureState read() const;
     std::size_t memoryBytes() const { return std::size_t(state_.size()); }  // GPU bytes held across frames

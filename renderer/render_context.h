@@ -20,12 +20,13 @@ struct FrameUniforms {
     glm::mat4 view_proj;
     glm::mat4 inv_view_proj;
     glm::vec4 camera_world;
-    glm::vec4 sun_dir;   // xyz towards the sun, w illuminance
+    glm::vec4 sun_dir;   // xyz towards the key light (the sun, or the moon at night), w [sky] sun_illuminance
     glm::vec4 viewport;  // w, h, 1/w, 1/h
     glm::vec4 time;      // x scene time (s), y frame index
     glm::vec4 near;      // x near plane (m)
+    glm::vec4 exposure;  // x pre-exposure (sky/night_light.h): every light's radiance is times this
 };
-static_assert(sizeof(FrameUniforms) == 4 * 64 + 5 * 16, "FrameUniforms must match the std140 block");
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 6 * 16, "FrameUniforms must match the std140 block");
 
 struct RenderContext {
     ShaderLibrary& shaders;
@@ -35,6 +36,7 @@ struct RenderContext {
     ViewMatrices matrices;
     std::uint64_t frame = 0;
     double time_s = 0.0;
+    double pre_exposure = 1.0;  // FrameUniforms::exposure.x (sky/night_light.h)
 };
 
 // Draws a full-screen triangle with the bound program.

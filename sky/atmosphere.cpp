@@ -4,6 +4,7 @@
 // when either crosses a grid step. A frame that rebuilds nothing adds "sky.aerial_volume" and
 // "sky.aerial" (when it has depth and aerial perspective is on) and "sky.atmosphere".
 #include "sky/atmosphere.h"
+#include "sky/night_light.h"
 
 #include "renderer/bindings.h"
 #include "renderer/camera.h"
@@ -23,8 +24,6 @@ namespace vista {
 
 namespace {
 
-constexpr double kMoonAngularRadiusDeg = 0.2587;  // mean
-constexpr double kMoonAlbedo = 0.12;              // normal albedo of the lunar surface
 constexpr int kMsPolarNodes = 8;    // per polar range, as the reference's default
 constexpr int kMsAzimuthNodes = 6;  // over [0, pi]
 
@@ -198,8 +197,10 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
         u.fog = glm::vec4(sky.fog_density_per_km, sky.fog_base_m * km, sky.fog_falloff_m * km, 0.0f);
     u.aerial = glm::vec4(sky.aerial_distance_km, float(sky.aerial_size), float(sky.aerial_slices), float(sky.aerial_steps));
     u.moon = glm::vec4(glm::vec3(moonDirection(sky)), float(glm::radians(kMoonAngularRadiusDeg)));
+    // w: the radiance of starlight and airglow, a uniform sky giving kNightFloorLux (E = pi L).
     u.night = glm::vec4(sky.stars ? sky.stars_intensity * sky.sun_illuminance : 0.0f, float(kMoonAlbedo),
-                        sky.moon ? 1.0f : 0.0f, 0.0f);
+                        sky.moon ? 1.0f : 0.0f,
+                        float(kNightFloorLux / kSolarIlluminanceLux / std::numbers::pi) * sky.sun_illuminance);
     const glm::dmat3 celestial = glm::transpose(celestialFromWorld(sky));  // rows of celestialFromWorld
     for (int i = 0; i < 3; ++i) u.celestial[i] = glm::vec4(glm::vec3(celestial[i]), 0.0f);
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};

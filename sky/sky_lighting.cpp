@@ -5,6 +5,7 @@
 #include "sky/sky_lighting.h"
 
 #include "sky/atmosphere.h"
+#include "sky/night_light.h"
 
 #include <glm/geometric.hpp>
 
@@ -56,19 +57,55 @@ const SkyLighting& SkyLightingCache::get(const SkySettings& sky, const glm::dvec
     // sun or its illuminance differ at all. (A threshold against the last evaluation would keep a
     // slowly climbing camera's old lighting for a history-dependent number of frames.)
     const double altitude = snapSkyLightingAltitude(std::max(camera_world_m.y, 0.0));
-    if (valid_ && sun == last_.sun_direction && altitude == last_altitude_m_ && last_illuminance_ == sky.sun_illuminance)
-        return last_;
-    const glm::dvec3 camera{0.0, altitude, 0.0};
-    const double scale = sky.sun_illuminance;
-    last_.sun_direction = sun;
-    last_.sun_illuminance = scale * sunIrradiance(p, camera, sun, kSteps.transmittance);
-    last_.sky_irradiance_up =
-        scale * skyIrradianceUp(p, camera, sun, kSteps, table_.get(), kIrradiancePolar, kIrradianceAzimuth);
-    last_altitude_m_ = altitude;
-    last_illuminance_ = sky.sun_illuminance;
-    valid_ = true;
-    ++evaluations_;
+    const glm::dvec3 moon = moonDirection(sky);
+    if (!(valid_ && sun == unit_.sun_direction && altitude == last_altitude_m_ && moon == last_moon_ &&
+          sky.moon == last_moon_on_)) {
+        const glm::dvec3 camera{0.0, altitude, 0.0};
+        unit_.sun_direction = sun;
+        unit_.sun_illuminance = sunIrradiance(p, camera, sun, kSteps.transmittance);
+        unit_.sky_irradiance_up =
+            skyIrradianceUp(p, camera, sun, kSteps, table_.get(), kIrradiancePolar, kIrradianceAzimuth);
+        // The moon: its phase from the elongation, through the atmosphere as the sun is (the
+        // same transmittance and fraction of the disk above the horizon; the radii differ by 3%).
+        unit_.moon_direction = moon;
+        const double elongation = std::acos(std::clamp(glm::dot(sun, moon), -1.0, 1.0));
+        unit_.moon_illuminance = sky.moon ? moonIlluminanceFraction(elongation) *
+                                                sunIrradiance(p, camera, moon, kSteps.transmittance)
+                                          : glm::dvec3(0.0);
+        unit_.night_irradiance_up = glm::dvec3(kNightFloorLux / kSolarIlluminanceLux);
+        last_altitude_m_ = altitude;
+        last_moon_ = moon;
+        last_moon_on_ = sky.moon;
+        valid_ = true;
+        last_illuminance_ = -1.0f;
+        ++evaluations_;
+    }
+    if (last_illuminance_ != sky.sun_illuminance) {
+        last_ = unit_.scaled(sky.sun_illuminance);
+        last_illuminance_ = sky.sun_illuminance;
+    }
     return last_;
+}
+
+bool SkyLighting::moonIsKey() const {
+    const glm::dvec3 w(0.2126, 0.7152, 0.0722);
+    return glm::dot(moon_illuminance, w) > glm::dot(sun_illuminance, w);
+}
+
+double SkyLighting::upLux(double sun_illuminance_setting) const {
+    const glm::dvec3 w(0.2126, 0.7152, 0.0722);
+    const glm::dvec3 up = sun_illuminance * std::max(sun_direction.y, 0.0) +
+                          moon_illuminance * std::max(moon_direction.y, 0.0) + sky_irradiance_up + night_irradiance_up;
+    return glm::dot(up, w) * luxPerHdrUnit(sun_illuminance_setting);
+}
+
+SkyLighting SkyLighting::scaled(double f) const {
+    SkyLighting out = *this;
+    out.sun_illuminance *= f;
+    out.sky_irradiance_up *= f;
+    out.moon_illuminance *= f;
+    out.night_irradiance_up *= f;
+    return out;
 }
 
 }  // namespace vista

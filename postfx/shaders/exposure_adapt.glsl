@@ -19,6 +19,11 @@ layout(location = 2) uniform vec2 u_speed;     // towards brighter, towards dark
 layout(location = 3) uniform float u_dt;       // s since the last frame
 layout(location = 4) uniform float u_reset;    // 1: take the target at once
 layout(location = 5) uniform float u_compensation;  // 2^ev
+// The image holds radiance times the frame's pre-exposure (sky/night_light.h): metering and
+// adaptation happen on the physical value (HDR units of [sky] sun_illuminance), so a change of
+// pre-exposure between frames moves nothing. x log2 pre-exposure, y log2 cd/m^2 per HDR unit,
+// z night_ev.
+layout(location = 6) uniform vec3 u_units;
 
 void main() {
     float total = 0.0;
@@ -35,12 +40,17 @@ void main() {
     }
     bool first = u_reset > 0.5 || valid < 0.5;
     float previous = first ? clamp(0.0, u_ev_range.x, u_ev_range.y) : adapted_log2;
-    float target = weight > 0.0 ? clamp(sum / weight, u_ev_range.x, u_ev_range.y) : previous;
+    float target = weight > 0.0 ? clamp(sum / weight - u_units.x, u_ev_range.x, u_ev_range.y) : previous;
     float rate = target > previous ? u_speed.x : u_speed.y;
     float adapted = first ? target : target + (previous - target) * exp(-max(u_dt, 0.0) * rate);
     adapted_log2 = adapted;
     target_log2 = target;
-    scale = 0.18 * u_compensation * exp2(-adapted);
+    // Below mesopic levels the eye does not bring a scene to middle grey: night_ev stops darker
+    // at scotopic adaptation (0.005 cd/m^2 and below), none from 5 cd/m^2 up (the CIE mesopic
+    // range), smooth in log luminance between.
+    float log10_cd = (adapted + u_units.y) * 0.30103;
+    float night = smoothstep(0.0, 1.0, (0.69897 - log10_cd) / 3.0);  // log10(5) = 0.69897
+    scale = 0.18 * u_compensation * exp2(-adapted - u_units.x - u_units.z * night);
     valid = 1.0;
 }
 #endif

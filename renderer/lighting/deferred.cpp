@@ -13,9 +13,11 @@ namespace vista {
 
 SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings) {
     SunAndSky out;
-    out.sun_irradiance = glm::vec3(sky.sun_illuminance);
-    out.sky_up = glm::vec3(sky.sky_irradiance_up);
-    const float sun_up = float(std::max(sky.sun_direction.y, 0.0));
+    // The key light: the sun, or the moon once it gives more (after sunset; no pop, as the sun's
+    // direct light is 0 by then). The night's floor of starlight and airglow joins the sky.
+    out.sun_irradiance = glm::vec3(sky.keyIlluminance());
+    out.sky_up = glm::vec3(sky.sky_irradiance_up + sky.night_irradiance_up);
+    const float sun_up = float(std::max(sky.keyDirection().y, 0.0));
     out.ground_up = settings.ground_albedo * (out.sun_irradiance * sun_up + out.sky_up);
     return out;
 }

@@ -15,8 +15,9 @@
 
 namespace vista {
 
-// The light the sky gives: sun irradiance at normal incidence and hemisphere ambient, RGB in
-// the HDR units of [sky] sun_illuminance. Direction: FrameUniforms::sun_dir.
+// The light the sky gives: the key light's (sun's or moon's, SkyLighting::keyDirection())
+// irradiance at normal incidence and hemisphere ambient, RGB in the HDR units of [sky]
+// sun_illuminance (times the frame's pre-exposure). Direction: FrameUniforms::sun_dir.
 struct SunAndSky {
     glm::vec3 sun_irradiance{0.0f};  // the sun's irradiance on a surface facing it
     glm::vec3 sky_up{0.0f};          // sky irradiance on an upward-facing surface

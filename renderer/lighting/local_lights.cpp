@@ -121,7 +121,7 @@ void LocalLights::readOverflow() {
 }
 
 bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& m, double time_s,
-                          const GroundHeight& ground) {
+                          const GroundHeight& ground, float radiance_scale) {
     const auto start = std::chrono::steady_clock::now();
     readOverflow();
     max_lights_per_cell_ = s.max_lights_per_cell;
@@ -233,7 +233,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         const glm::vec3 dir = glm::length(l.direction) > 0.0f ? glm::normalize(l.direction) : glm::vec3(0, -1, 0);
         glm::vec4* g = &gpu[kGpuLightVec4 * k];
         g[0] = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
-        g[1] = glm::vec4(l.color * l.intensity, cone.scale);
+        g[1] = glm::vec4(l.color * (l.intensity * radiance_scale), cone.scale);
         g[2] = glm::vec4(dir, cone.offset);
         g[3] = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);  // unshadowed until setShadowSlots()
     }

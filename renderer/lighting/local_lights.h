@@ -100,8 +100,9 @@ public:
     // reach a visible point (none at all, or, for tiled and clustered, none whose bounding
     // sphere meets the view frustum): then add no passes.
     // ground (may be empty) gives the terrain height (m) at world x, z for volumes with `ground`.
+    // radiance_scale multiplies every light's colour * intensity (the frame's pre-exposure).
     bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s,
-                 const GroundHeight& ground);
+                 const GroundHeight& ground, float radiance_scale = 1.0f);
     // Needs targets.depth, .albedo, .normal; adds to targets.hdr (and makes targets.light_heat).
     void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
                    const LightPassOptions& options);

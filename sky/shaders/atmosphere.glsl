@@ -25,7 +25,7 @@ layout(std140, binding = SKY_ATMOSPHERE_BLOCK) uniform AtmosphereUniforms {
     vec4 a_fog;            // height fog: x extinction at the base (1/km, 0: none), y base altitude, z falloff (km)
     vec4 a_aerial;         // aerial-perspective volume: x depth reached (km), y froxels per side, z slices, w steps per slice
     vec4 a_moon;           // xyz unit vector towards the moon, w its angular radius (rad)
-    vec4 a_night;          // x star intensity (HDR, 0: no stars), y moon albedo, z 1 to draw the moon
+    vec4 a_night;          // x star intensity (HDR, 0: no stars), y moon albedo, z 1 to draw the moon, w airglow radiance
     vec4 a_celestial[3];   // rows of the rotation from the world to the celestial frame (stars)
     ivec4 a_sizes;         // transmittance w, h, multiscatter size, sky-view w
     ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps

@@ -167,7 +167,7 @@ void main() {
             float norm = 1.0 / (PI * alpha * alpha * (1.0 - u / 3.0));
             radiance += (1.0 - moon_cover) * a_solar.xyz * t_view * limb * norm;
         }
-        radiance += t_view * moon;
+        radiance += t_view * moon + a_night.w;  // airglow and unresolved starlight: the night's floor
         // Each star fades out as the sky behind it brightens from 1% to 10% of its own peak.
         if (stars_visible)
             radiance += t_view * (1.0 - moon_cover) * starField(dir, pixel_rad, sky_luminance);

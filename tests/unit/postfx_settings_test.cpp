@@ -31,7 +31,7 @@ TEST_CASE("postfx: an unknown or repeated effect in order is an error naming it,
     REQUIRE(e.size() == 1);
     CHECK(e[0].line == 2);
     CHECK(e[0].str().find("[postfx] order = bloom glare tonemap is not accepted ('glare'); accepted: names from bloom, "
-                          "exposure, tonemap, fxaa, grade, dof, motion_blur, lens_flare, night_vision, each at most once") != std::string::npos);
+                          "exposure, tonemap, fxaa, grade, dof, motion_blur, lens_flare, night_vision, scotopic, each at most once") != std::string::npos);
     CHECK(s.postfx.order == Settings{}.postfx.order);
     e = applyOverride("postfx.order=tonemap,tonemap", s);
     REQUIRE(e.size() == 1);
