@@ -122,7 +122,12 @@ int runBenchSky(const BenchScene& isolated, const BenchSkyOptions& o) {
         for (std::size_t i = 0; i < std::size(kViews); ++i) {
             const View& v = kViews[i];
             s.sky.sun_elevation_deg = v.sun_elevation;
-            renderer.render(s, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, ref_w, ref_h}, 0.0, request);
+            const FrameReport report =
+                renderer.render(s, ViewParams{{0.0, v.altitude, 0.0}, v.yaw, v.pitch, 60.0, 0.5, ref_w, ref_h}, 0.0, request);
+            // The target holds radiance times the frame's pre-exposure (sky/night_light.h); the
+            // reference is the radiance itself.
+            if (const double pre = report.counters.at("sky.pre_exposure"); pre != 1.0)
+                for (std::uint16_t& h : hdr) h = std::uint16_t(glm::packHalf1x16(float(glm::unpackHalf1x16(h) / pre)));
             double db = skyPsnrDb(hdr, references[i]);
             psnr[v.name] = db;
             psnr_min = std::min(psnr_min, db);
