@@ -1,4 +1,5 @@
 // The vista executable as a user runs it: exit codes and messages of check and capture.
+#include "cli_runner.h"
 #include "gl_fixture.h"
 
 #include <algorithm>
@@ -14,22 +15,8 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string output;  // stdout and stderr
-};
-
-Run run(const std::string& args) {
-    std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + VISTA_EXECUTABLE + " " + args + " 2>&1";
-    Run r{-1, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using vista::test::Run;
+Run run(const std::string& args) { return vista::test::runVista(args); }
 
 }  // namespace
 

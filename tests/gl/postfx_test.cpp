@@ -44,21 +44,8 @@ struct Bench {
         FrameGraph graph;
         TextureHandle in = graph.importTexture("input", {w, h, PixelFormat::RGBA32F}, input.id());
         TextureHandle out = add(graph, rc, in);
-        struct Data {
-            TextureHandle t;
-        };
         std::vector<float> result;
-        if (read) graph.addPass<Data>("test.readback",
-            [&](PassBuilder& b, Data& d) {
-                d.t = b.read(out);
-                b.sideEffect();
-            },
-            [&result](const Data& d, PassContext& ctx) {
-                const TextureDesc& desc = ctx.desc(d.t);
-                result.resize(std::size_t(desc.width) * std::size_t(desc.height) * 4);
-                glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(result.size() * sizeof(float)),
-                                  result.data());
-            });
+        if (read) test::addReadback(graph, out, result);
         graph.compile();
         graph.execute(pool, nullptr);
         pool.endFrame();
@@ -405,19 +392,8 @@ std::vector<float> runSsao(const Gbuffer& g, const ViewParams& view, const SsaoS
     scene.depth = graph.importTexture("depth", {g.w, g.h, PixelFormat::Depth32F}, depth.id());
     scene.normal = graph.importTexture("normal", {g.w, g.h, PixelFormat::RGBA16F}, normal.id());
     TextureHandle ao = addSsaoPasses(graph, rc, scene, s);
-    struct Data {
-        TextureHandle t;
-    };
     std::vector<float> out;
-    graph.addPass<Data>("test.readback",
-        [&](PassBuilder& b, Data& d) {
-            d.t = b.read(ao);
-            b.sideEffect();
-        },
-        [&out, &g](const Data& d, PassContext& ctx) {
-            out.resize(std::size_t(g.w) * std::size_t(g.h) * 4);
-            glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
-        });
+    test::addReadback(graph, ao, out);
     graph.compile();
     graph.execute(pool, nullptr);
     pool.clear();

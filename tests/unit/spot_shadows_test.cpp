@@ -8,6 +8,7 @@
 #include "renderer/camera.h"
 #include "renderer/shadows/spot_shadows.h"
 #include "terrain/cdlod.h"
+#include "terrain_helpers.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -180,10 +181,7 @@ TEST_CASE("spot shadows: `shadow on|off` in a light entry, round trip and errors
 
 TEST_CASE("spot shadows: a selection widened by spot views keeps the view's own nodes and covers the spots") {
     const int n = 257;
-    Heightmap map{n, n, std::vector<float>(std::size_t(n) * n)};
-    for (int z = 0; z < n; ++z)
-        for (int x = 0; x < n; ++x)
-            map.samples[std::size_t(z * n + x)] = float(0.5 + 0.25 * std::sin(x * 0.13) * std::cos(z * 0.05));
+    const Heightmap map = test::bumpyHeightmap(n, 0.13, 0.05);
     TerrainMapping mapping{4096.0, 600.0, 0.0, n, n};
     MinMaxQuadtree tree(map, mapping, 16);
     LodSettings lod;
