@@ -190,17 +190,12 @@ TEST_CASE("shadows: caster planes keep a point above the box (towards the sun) a
 
 TEST_CASE("shadows: selecting with the caster frustum and culling by the view gives the view's own selection") {
     // A bumpy 257x257 map, random views and suns: same nodes, same levels.
-    const int n = 257;
-    const Heightmap map = test::bumpyHeightmap(n, 0.11, 0.07);
-    TerrainMapping mapping{4096.0, 600.0, 0.0, n, n};
-    MinMaxQuadtree tree(map, mapping, 16);
-    LodSettings lod;
-    lod.base_range_m = 100.0;
+    const test::BumpyQuadtree terrain(0.11, 0.07);
+    const auto& [mapping, tree, lod] = terrain;
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < 40; ++k) {
-        ViewParams v{{(u(rng) - 0.5) * 4000, 300 + u(rng) * 500, (u(rng) - 0.5) * 4000}, u(rng) * 360, -5 - u(rng) * 40,
-                     60.0, 0.1, 320, 180};
+        const ViewParams v = test::randomView(rng, 4000, 300, 500);
         glm::dmat4 vp(viewMatrices(v).view_proj);
         Frustum view = frustumFromViewProj(vp);
         Selection own, wide, culled;

@@ -180,17 +180,12 @@ TEST_CASE("spot shadows: `shadow on|off` in a light entry, round trip and errors
 }
 
 TEST_CASE("spot shadows: a selection widened by spot views keeps the view's own nodes and covers the spots") {
-    const int n = 257;
-    const Heightmap map = test::bumpyHeightmap(n, 0.13, 0.05);
-    TerrainMapping mapping{4096.0, 600.0, 0.0, n, n};
-    MinMaxQuadtree tree(map, mapping, 16);
-    LodSettings lod;
-    lod.base_range_m = 100.0;
+    const test::BumpyQuadtree terrain(0.13, 0.05);
+    const auto& [mapping, tree, lod] = terrain;
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < 30; ++k) {
-        ViewParams v{{(u(rng) - 0.5) * 3000, 350 + u(rng) * 300, (u(rng) - 0.5) * 3000}, u(rng) * 360, -5 - u(rng) * 40,
-                     60.0, 0.1, 320, 180};
+        const ViewParams v = test::randomView(rng, 3000, 350, 300);
         const Frustum view = frustumFromViewProj(glm::dmat4(viewMatrices(v).view_proj));
         // Two street lights, one of them behind the camera (outside the view).
         std::vector<Frustum> spots;
