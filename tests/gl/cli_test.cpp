@@ -1,4 +1,5 @@
 // The vista executable as a user runs it: exit codes and messages of check and capture.
+#include "app/scene.h"
 #include "cli_runner.h"
 #include "gl_fixture.h"
 
@@ -31,6 +32,15 @@ TEST_CASE("gl: vista check accepts the default scene and lists every error of a 
     CHECK(r.output.find("did you mean 'width'") != std::string::npos);
     CHECK(r.output.find("broken.ini:3:") != std::string::npos);
     CHECK(r.output.find("broken.ini:5:") != std::string::npos);
+}
+
+TEST_CASE("gl: vista check --reference prints the scene-file reference that docs/scene-file.md holds") {
+    Run r = run("check --reference");
+    CHECK(r.code == 0);
+    std::ifstream in(vista::vistaRoot() / "docs/scene-file.md", std::ios::binary);
+    std::stringstream committed;
+    committed << in.rdbuf();
+    CHECK(r.output == committed.str());
 }
 
 TEST_CASE("gl: bad command lines and overrides exit 2 with a message") {
