@@ -4,7 +4,7 @@
 // frame with every range's maximum took 40 s (23 s the 256^3 x 16-step aerial volume, 13 s a
 // 1024x576 x 256-step sky view rebuilt every frame, 3 s a 2048^2 cloud shadow map), so the
 // per-frame sky and cloud knobs stop at 2-4x their ultra value (marked "not the maximum"). The
-// levels in between were tuned from `vista quality` on the default scene (README, "Quality
+// levels in between were tuned from `vista quality` on the default scene (docs/quality.md, "Quality
 // against run time"): each preset sits on or near the front of image error against GPU time.
 #include "config/presets.h"
 
