@@ -319,6 +319,9 @@ int runCommand(int argc, char** argv) {
     capture_opts.add(capture_cmd, true);
     CLI::App* check_cmd = app.add_subcommand("check", "validate a scene file and its camera path; list every problem");
     check_scene.add(check_cmd);
+    bool check_reference = false;
+    check_cmd->add_flag("--reference", check_reference,
+                        "print the scene-file reference (Markdown, from the settings' descriptions; docs/scene-file.md)");
     CLI::App* bench_cmd = app.add_subcommand("bench", "measure per-pass GPU/CPU times");
     bench_cmd->require_subcommand(1);
     CLI::App* bench_frame = bench_cmd->add_subcommand("frame", "whole frames along the capture path");
@@ -472,6 +475,10 @@ int runCommand(int argc, char** argv) {
     if (*encode_cmd) return runEncode(encode_opts);
     if (*merge_cmd) return runFarmMerge(merge_opts);
     if (*slurm_cmd) return runFarmSlurm(slurm_opts);
+    if (*check_cmd && check_reference) {
+        std::fputs(sceneFileReference().c_str(), stdout);
+        return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : fail(1, "cannot write the reference to stdout");
+    }
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);

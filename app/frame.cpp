@@ -115,8 +115,9 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     u.view_proj = rc.matrices.view_proj;
     u.inv_view_proj = rc.matrices.inv_view_proj;
     u.camera_world = glm::vec4(glm::vec3(view.position), 1.0f);
-    glm::dvec3 sun = sunDirection(settings.sky);
-    u.sun_dir = glm::vec4(glm::vec3(sun), settings.sky.sun_illuminance);
+    rc.sun_direction = sunDirection(settings.sky);
+    rc.sun_illuminance = settings.sky.sun_illuminance;
+    u.sun_dir = glm::vec4(glm::vec3(rc.sun_direction), rc.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
     u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);

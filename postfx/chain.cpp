@@ -6,7 +6,6 @@
 #include "postfx/fxaa.h"
 #include "postfx/grade.h"
 #include "postfx/lut.h"
-#include "sky/atmosphere.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
@@ -88,8 +87,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 if (!s.lens_flare.enabled || !depth.valid()) break;
                 flush();
                 if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
-                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, sunDirection(s.sky),
-                                               s.sky.sun_illuminance, dt, reset);
+                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, rc.sun_direction,
+                                               rc.sun_illuminance, dt, reset);
                 uses_flare = true;
                 break;
             case PostEffect::NightVision:

@@ -35,6 +35,10 @@ struct RenderContext {
     ViewMatrices matrices;
     std::uint64_t frame = 0;
     double time_s = 0.0;
+    // The frame's sun (as in FrameUniforms::sun_dir), for passes that work with it on the CPU
+    // (the lens flare): they read it here rather than from the sky's settings.
+    glm::dvec3 sun_direction{0.0, 1.0, 0.0};  // unit vector towards the sun
+    float sun_illuminance = 0.0f;
 };
 
 // Draws a full-screen triangle with the bound program.

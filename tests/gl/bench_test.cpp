@@ -1,6 +1,7 @@
 // Each bench run as a user runs it, at test size, on the default scene (which has the sea,
 // grass, clouds and lights on): its key figure is pinned, so a feature that leaks into a bench
 // or a regression in what it measures fails here, not in a reader's hands months later.
+#include "cli_runner.h"
 #include "gl_fixture.h"
 
 #include <nlohmann/json.hpp>
@@ -14,24 +15,14 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string output;  // stdout and stderr
+struct Run : vista::test::Run {
     nlohmann::json json;
 };
 
 // Runs `vista bench ARGS --json FILE` and parses FILE.
 Run bench(const std::string& args, const vista::test::TempDir& dir) {
     const std::filesystem::path file = dir.path / "bench.json";
-    std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + VISTA_EXECUTABLE + " bench " + args + " --json " +
-                      file.string() + " 2>&1";
-    Run r{-1, {}, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    Run r{vista::test::runVista("bench " + args + " --json " + file.string()), {}};
     if (r.code == 0) r.json = nlohmann::json::parse(std::ifstream(file));
     return r;
 }
