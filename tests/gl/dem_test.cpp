@@ -171,3 +171,43 @@ TEST_CASE("gl: a bad DEM is refused with exit code 2 by capture and check, namin
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     CHECK(text.find(junk.string() + ": cannot be read as a DEM by GDAL") != std::string::npos);
 }
+
+TEST_CASE("gl: vista terrain-cache builds once, then finds the cache up to date, stale or truncated") {
+    test::TempDir dir("dem-cache");
+    const std::filesystem::path dem = dir.path / "hills.tif", cache = dir.path / "hills.vtc";
+    writeDem(dem, 129, 129, 10.0, hills);
+    auto run = [&](const std::string& args) {
+        const std::filesystem::path log = dir.path / "log.txt";
+        const std::string command = std::string(VISTA_EXECUTABLE) + " terrain-cache " + dem.string() + " --out " +
+                                    cache.string() + " --tile 32 " + args + " > " + log.string() + " 2>&1";
+        const int status = std::system(command.c_str());
+        std::ifstream in(log);
+        return std::make_pair(WEXITSTATUS(status), std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+    };
+    auto [code, text] = run("");
+    CHECK(code == 0);
+    CHECK(text.find("wrote " + cache.string() + ": 129x129 samples, 21 tiles of 32") != std::string::npos);
+    std::tie(code, text) = run("");
+    CHECK(code == 0);
+    CHECK(text.find("up to date") != std::string::npos);
+    // A changed input (another time and other first bytes) rebuilds.
+    writeDem(dem, 129, 129, 10.0, [](int x, int z) { return hills(x, z) + 1.0; });
+    std::filesystem::last_write_time(dem, std::filesystem::last_write_time(dem) + std::chrono::seconds(3));
+    std::tie(code, text) = run("");
+    CHECK(code == 0);
+    CHECK(text.find("another version") != std::string::npos);
+    CHECK(text.find("wrote") != std::string::npos);
+    // A truncated cache is found and rebuilt.
+    std::filesystem::resize_file(cache, std::filesystem::file_size(cache) / 2);
+    std::tie(code, text) = run("");
+    CHECK(code == 0);
+    CHECK(text.find("truncated") != std::string::npos);
+    CHECK(text.find("wrote") != std::string::npos);
+    // Bad input is exit code 2 naming what is wrong.
+    const std::string command = std::string(VISTA_EXECUTABLE) + " terrain-cache " + dem.string() + " --tile 1 > " +
+                                (dir.path / "bad.txt").string() + " 2>&1";
+    CHECK(WEXITSTATUS(std::system(command.c_str())) == 2);
+    std::ifstream bad(dir.path / "bad.txt");
+    CHECK(std::string((std::istreambuf_iterator<char>(bad)), std::istreambuf_iterator<char>()).find("--tile 1 is out of range") !=
+          std::string::npos);
+}
