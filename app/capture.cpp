@@ -39,6 +39,7 @@ std::string checkCaptureOutputs(const CaptureJob& job) {
     std::vector<std::filesystem::path> inputs = job.inputs;
     inputs.push_back(resolveInput(c.path));
     inputs.push_back(resolveInput(job.settings.terrain.heightmap));
+    if (!job.settings.terrain.dem.empty()) inputs.push_back(resolveInput(job.settings.terrain.dem));
     if (!job.settings.grade.lut.empty()) inputs.push_back(resolveInput(job.settings.grade.lut));
     const std::pair<const char*, const std::filesystem::path*> outputs[] = {{"--stats", &job.stats_file},
                                                                             {"--dot", &job.dot_file}};

@@ -18,6 +18,7 @@
 #include "app/scene.h"
 #include "app/scene_check.h"
 #include "terrain/gen_heightmap.h"
+#include "app/terrain_cache_cmd.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -460,6 +461,16 @@ int runCommand(int argc, char** argv) {
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
     gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
 
+    TerrainCacheOptions cache_opts;
+    CLI::App* cache_cmd = app.add_subcommand("terrain-cache", "build the tile cache (LOD pyramid on disk) of a DEM or heightmap once (docs/dem.md)");
+    cache_cmd->add_option("file", cache_opts.input, "DEM (GDAL) or heightmap image")->required();
+    cache_cmd->add_option("--out", cache_opts.out, "cache file (default: FILE.vtc)");
+    cache_cmd->add_option("--tile", cache_opts.tile, "samples between tile origins, 2..4096")->check(kDecimal);
+    cache_cmd->add_option("--size-m", cache_opts.size_m, "a heightmap image's extent in m ([terrain] size_m)");
+    cache_cmd->add_option("--height-scale-m", cache_opts.height_scale_m, "a heightmap image's height of value 1 in m");
+    cache_cmd->add_option("--height-offset-m", cache_opts.height_offset_m, "a heightmap image's height of value 0 in m");
+    cache_cmd->add_flag("--force", cache_opts.force, "rebuild even when the cache is up to date");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -482,6 +493,7 @@ int runCommand(int argc, char** argv) {
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
+    if (*cache_cmd) return runTerrainCache(cache_opts);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;

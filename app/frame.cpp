@@ -92,8 +92,9 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
     }
     TerrainSettings wanted = s.terrain;
     wanted.heightmap = resolveInput(s.terrain.heightmap).string();
+    wanted.dem = resolveInput(s.terrain.dem).string();
     bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
-                                                           terrain_source_.grid == wanted.grid;
+                                                           terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid;
     if (same) return errors;
     terrain_.reset();
     terrain_ = Terrain::load(wanted, shaders_, errors);

@@ -12,6 +12,7 @@ InputErrors validateSceneInputs(const Settings& s) {
     if (s.terrain.enabled) {
         TerrainSettings wanted = s.terrain;
         wanted.heightmap = resolveInput(s.terrain.heightmap).string();
+        wanted.dem = resolveInput(s.terrain.dem).string();
         Terrain::loadChecked(wanted, errors);  // the same function Terrain::load runs
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare

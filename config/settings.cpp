@@ -74,6 +74,15 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"heightmap", "", "PNG (8/16-bit), TIFF, EXR, or raw .r16 with raw_width/raw_height"}, s.heightmap);
     v.field({"raw_width", "samples", "width of a .r16 heightmap"}, s.raw_width, 0, 65536);
     v.field({"raw_height", "samples", "height of a .r16 heightmap"}, s.raw_height, 0, 65536);
+    static constexpr std::array<const char*, 2> nodata{"fill", "refuse"};
+    v.field({"dem", "", "elevation model read by GDAL (GeoTIFF, SRTM .hgt, ESRI ASCII grid, VRT mosaic, ...): replaces "
+                        "heightmap; size_m, height_scale_m and height_offset_m then come from its geotransform and heights "
+                        "(docs/dem.md)"},
+            s.dem);
+    v.choice({"dem_nodata", "", "a DEM's nodata cells: fill = from their neighbours, refuse = an error naming the first"},
+             s.dem_nodata, nodata);
+    v.field({"dem_vertical_scale", "x", "multiplies a DEM's heights (vertical exaggeration)"}, s.dem_vertical_scale, 0.01f,
+            100.0f);
     v.field({"origin", "m", "world position of the map centre; y is added to heights"}, s.origin, -1e8, 1e8);
     v.field({"size_m", "m", "extent of the map in x and z"}, s.size_m, 1.0f, 1.0e7f);
     v.field({"height_scale_m", "m", "height of heightmap value 1"}, s.height_scale_m, 0.0f, 1.0e5f);

@@ -63,12 +63,16 @@ struct DebugSettings {
 
 enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
 enum class LodMetric : int { Error, Distance };
+enum class DemNodata : int { Fill, Refuse };  // what a DEM's nodata cells get (terrain/dem.h)
 
 struct TerrainSettings {
     bool enabled = true;
     std::string heightmap = "data/heightmaps/island.png";  //!< PNG/TIFF/EXR, or .r16 with raw_width/raw_height
     int raw_width = 0;                //!< samples, .r16 only
     int raw_height = 0;               //!< samples, .r16 only
+    std::string dem;                  //!< elevation model read by GDAL (GeoTIFF, .hgt, ASCII grid, VRT, ...); replaces heightmap, and size and heights come from its data
+    DemNodata dem_nodata = DemNodata::Fill;  //!< nodata cells of a DEM: filled from their neighbours, or refused
+    float dem_vertical_scale = 1.0f;  //!< x, multiplies a DEM's heights (exaggeration), 0.01..100
     glm::dvec3 origin{0.0};           //!< m, world position of the map centre (y: added to heights)
     float size_m = 8192.0f;           //!< m, extent of the map in x and z
     float height_scale_m = 600.0f;    //!< m, height of heightmap value 1

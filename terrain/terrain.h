@@ -49,13 +49,17 @@ public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
     // is accepted). Needs a current GL context and the shader library.
     static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
-    // The checks load() makes without GL (heightmap file, samples, height range, grid), for
-    // `vista check`; returns the map when they pass (empty otherwise, with errors).
-    static Heightmap loadChecked(const TerrainSettings& s, InputErrors& errors);
+    // The checks load() makes without GL (heightmap or DEM file, samples, height range, grid),
+    // for `vista check`; returns the map when they pass (empty otherwise, with errors), and its
+    // mapping in *mapping: from the settings for a heightmap, from the data for a DEM.
+    static Heightmap loadChecked(const TerrainSettings& s, InputErrors& errors, TerrainMapping* mapping = nullptr);
     // Same, from a heightmap already in memory (benchmarks, generated maps). max_texture
     // lowers the texture size limit the tiles must fit (tests; 0: GL_MAX_TEXTURE_SIZE).
     static std::unique_ptr<Terrain> create(Heightmap map, const TerrainSettings& s, ShaderLibrary& shaders,
                                            InputErrors& errors, int max_texture = 0);
+    // Same with the mapping given (a DEM's, terrain/dem.h) rather than taken from s.
+    static std::unique_ptr<Terrain> create(Heightmap map, const TerrainMapping& mapping, const TerrainSettings& s,
+                                           ShaderLibrary& shaders, InputErrors& errors, int max_texture = 0);
 
     // True when s names the same data and mapping (no reload needed).
     bool matches(const TerrainSettings& s) const;
