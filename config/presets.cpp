@@ -161,7 +161,15 @@ const QualityKnob kKnobs[] = {
     {"water.waves", "", {16, 20, 24, 32, 32},
      [](Settings& s, double v, const Settings&) { s.water.waves = toInt(v); },
      [](const Settings& s) { return double(s.water.waves); }, [](const Settings& s) { return s.water.enabled; }},
-    // Post chain.
+    // Post chain. Anti-aliasing: TAA (postfx/taa.h) from medium up; the low preset keeps FXAA,
+    // one full-screen pass without history.
+    {"postfx.taa", "", {0, 1, 1, 1, 1},
+     [](Settings& s, double v, const Settings&) {
+         s.taa.enabled = v != 0.0;
+         s.fxaa.enabled = v == 0.0;
+     },
+     [](const Settings& s) { return s.taa.enabled ? 1.0 : 0.0; }, [](const Settings& s) { return s.postfx.enabled; },
+     nullptr, true},
     {"ssao.directions", "", {2, 3, 4, 8, 16},
      [](Settings& s, double v, const Settings&) { s.ssao.directions = toInt(v); },
      [](const Settings& s) { return double(s.ssao.directions); }, ssaoOn},

@@ -40,6 +40,7 @@ struct Rendered {
 Rendered render(const Settings& s, const ViewParams& view, double t = 0.0) {
     FrameRenderer& r = renderer();
     REQUIRE(r.prepare(s).empty());
+    r.resetHistory();  // each frame the first of a run: frames compare without history or jitter differences
     r.counters().collect(true);
     std::vector<std::uint16_t> half;
     FrameRequest request;

@@ -66,6 +66,7 @@ Frame render(const Settings& s, const ViewParams& view, double t, bool ldr = fal
     request.count_nonfinite = true;
     request.count_weather = true;
     Frame f;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     f.report = r.render(s, view, t, request);
     for (const auto& c : r.counters().collect(true)) {
         if (c.name == "weather.drops") f.drops = c.value;
