@@ -10,7 +10,9 @@
 #include <glm/gtc/packing.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 using namespace vista;
@@ -39,12 +41,15 @@ ViewParams skyView(double yaw_deg, double pitch_deg = 12.0) {
 }
 
 // Linear luminance of the HDR target (the scene before the post chain).
-std::vector<double> frame(const Settings& s, const ViewParams& v, double t = kTime) {
+// sequence: the frame's index in its path (jitter and blue noise); unset: frames since the reset.
+std::vector<double> frame(const Settings& s, const ViewParams& v, double t = kTime,
+                          std::optional<std::int64_t> sequence = std::nullopt) {
     FrameRenderer& r = renderer();
     REQUIRE(r.prepare(s).empty());
     std::vector<std::uint16_t> half;
     FrameRequest request;
     request.capture_hdr = &half;
+    request.sequence_frame = sequence;
     r.render(s, v, t, request);
     std::vector<double> lum(std::size_t(kW * kH));
     for (std::size_t i = 0; i < lum.size(); ++i)
@@ -185,14 +190,16 @@ TEST_CASE("gl: a frame after resetHistory and settle frames matches the same fra
         return v;
     };
     auto time = [](int k) { return kTime + k / 30.0; };
-    constexpr int k = 24, settle = 16;
+    constexpr int k = 24, settle = 8;  // [capture] settle_frames default
     renderer().resetHistory();
     std::vector<double> run;
-    for (int i = 0; i <= k; ++i) run = frame(s, pose(i), time(i));
+    for (int i = 0; i <= k; ++i) run = frame(s, pose(i), time(i), i);
     renderer().resetHistory();
     std::vector<double> split;
-    for (int i = k - settle; i <= k; ++i) split = frame(s, pose(i), time(i));
+    for (int i = k - settle; i <= k; ++i) split = frame(s, pose(i), time(i), i);
     const double db = psnr(split, run, kUpper);
     MESSAGE("frame " << k << " after " << settle << " settle frames against the same frame of a longer run: " << db << " dB");
-    CHECK(db > 26.0);  // measured 28.4 dB: the residual noise of either frame (docs/temporal.md)
+    // Measured 28.5 dB at 8 settle frames, 36.6 at 16 (relative to the clouds' mean luminance, so
+    // stricter than 8-bit PSNR); with the jitter counted from the reset instead: 28.4 at 16.
+    CHECK(db > 26.0);
 }
