@@ -58,6 +58,7 @@ struct Frame {
 Frame render(const Settings& s, const ViewParams& view) {
     useHills(s);
     FrameRenderer& r = renderer();
+    r.resetHistory();            // each frame as the first of a run: no TAA history or jitter to tell them apart
     r.counters().collect(true);  // drop what earlier frames left
     std::vector<std::uint16_t> half;
     FrameRequest request;
