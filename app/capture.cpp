@@ -213,6 +213,7 @@ CaptureResult runCapture(const CaptureJob& job) {
         CameraPose pose = path.sample(t);
         ViewParams view{pose.position, pose.yaw_deg, pose.pitch_deg, pose.fov_deg, s.camera.near_m, c.width, c.height};
         request.graph_dot = last && !job.dot_file.empty() ? &dot : nullptr;
+        request.sequence_frame = frame;  // the jitter and blue noise follow the path frame, not the run
         return renderer.render(s, view, t, request);
     };
     auto flushStats = [&](bool wait) {

@@ -8,6 +8,7 @@
 #include "renderer/debug_view.h"
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
+#include "renderer/temporal.h"
 #include "app/scene.h"
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
@@ -57,6 +58,7 @@ std::vector<ProgramKey> allPrograms() {
         programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : taaPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
@@ -108,8 +110,13 @@ void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
     terrain_failed_ = false;
 }
 
-RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
+RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s,
+                                     glm::dvec2 jitter_px) {
     RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
+    if (jitter_px != glm::dvec2(0.0)) {
+        applyJitter(rc.matrices, jitter_px, view.width, view.height);
+        rc.jitter_ndc = glm::vec2(2.0 * jitter_px / glm::dvec2(std::max(view.width, 1), std::max(view.height, 1)));
+    }
     FrameUniforms u{};
     u.view = rc.matrices.view;
     u.proj = rc.matrices.proj;
@@ -120,10 +127,11 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     rc.sun_illuminance = settings.sky.sun_illuminance;
     u.sun_dir = glm::vec4(glm::vec3(rc.sun_direction), rc.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
-    u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
+    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), 0.0f);
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frame_uniforms_.id());
+    glBindTextureUnit(binding::kBlueNoise, blue_noise_.id());
     return rc;
 }
 
@@ -282,10 +290,36 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
 void FrameRenderer::resetHistory() {
     postfx_.resetHistory();
     weather_.reset();  // its previous camera (streak velocity); recreated by the next frame with weather
+    if (taa_) taa_->reset();
+    if (clouds_) clouds_->resetHistory();
+    has_last_view_ = false;
+    temporal_index_ = 0;
 }
 
 FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request) {
-    RenderContext rc = context(view, s, time_s);
+    // A camera cut (or time running backwards: a new run) rejects every history this frame.
+    const bool cut = !has_last_view_ || time_s < last_time_s_ ||
+                     cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
+    last_view_ = view;
+    last_time_s_ = time_s;
+    has_last_view_ = true;
+    const bool taa = s.taa.enabled && s.postfx.enabled;
+    if (!taa && taa_) {  // off: no history kept
+        taa_->release(device_);
+        taa_.reset();
+    }
+    // A frame without history (the first after a reset or a cut) is not jittered: nothing
+    // would average its offset out, and it matches an image rendered without TAA.
+    // The index comes from the frame's place in its sequence when the caller knows it (a capture's
+    // path frame), so the jitter does not depend on how many frames this run rendered before;
+    // 65,536 is a whole number of jitter cycles (8) and keeps the index exact in a float uniform.
+    constexpr std::int64_t kIndexPeriod = 65536;
+    sequence_index_ = request.sequence_frame
+                          ? std::uint64_t(((*request.sequence_frame % kIndexPeriod) + kIndexPeriod) % kIndexPeriod)
+                          : temporal_index_ % kIndexPeriod;
+    const glm::dvec2 jitter = taa && !cut ? TemporalAA::jitterPx(sequence_index_) : glm::dvec2(0.0);
+    RenderContext rc = context(view, s, time_s, jitter);
+    ++temporal_index_;
     FrameGraph graph;
 
     const bool terrain = s.terrain.enabled && terrain_;
@@ -340,7 +374,8 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         if (!clouds_) clouds_ = std::make_unique<Clouds>();
         report.counters["clouds.layers"] =
             double(clouds_->prepare(rc, s.clouds, s.sky, sky_lighting_.get(s.sky, view.position).sky_irradiance_up));
-    } else {
+    } else if (clouds_) {
+        clouds_->releaseHistory(device_);
         clouds_.reset();
     }
     if (scene.albedo.valid()) {
@@ -388,7 +423,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     }
     if (!shadow_view && s.sky.enabled) {
         sky_->addScenePasses(graph, rc, s.sky, scene);
-        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene, cut);
     }
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
@@ -403,6 +438,13 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     } else {
         weather_.reset();
     }
+    if (taa) {
+        if (!taa_) taa_ = std::make_unique<TemporalAA>();
+        scene.hdr = taa_->addPass(graph, rc, scene.hdr, scene.depth, s.taa, cut);
+        report.counters["postfx.taa.history_frames"] = double(taa_->historyFrames());
+    }
+    if (clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
+    report.counters["temporal.cut"] = cut ? 1.0 : 0.0;
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
     if (request.light_heat && scene.light_heat.valid())
         addReadbackPass(graph, "lights.heat_readback", scene.light_heat, GL_FLOAT, *request.light_heat);
@@ -445,7 +487,8 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
     if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
     if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
-    if (const std::size_t postfx = postfx_.memoryBytes(); postfx > 0) report.counters["postfx.memory_bytes"] = double(postfx);
+    if (const std::size_t postfx = postfx_.memoryBytes() + (taa_ ? taa_->memoryBytes() : 0); postfx > 0)
+        report.counters["postfx.memory_bytes"] = double(postfx);
     report.counters["gpu.transient_bytes"] = double(pool_.bytes());
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
     return report;
@@ -457,7 +500,8 @@ std::size_t FrameRenderer::gpuMemoryBytes() const {
            (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
            (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
            (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
-           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes();
+           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes() +
+           (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes();
 }
 
 }  // namespace vista

@@ -13,6 +13,8 @@
 #include "renderer/transient_pool.h"
 #include "renderer/lighting/local_lights.h"
 #include "postfx/chain.h"
+#include "postfx/taa.h"
+#include "renderer/blue_noise.h"
 #include "renderer/shadows/spot_shadows.h"
 #include "renderer/shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +59,11 @@ struct FrameRequest {
                                                    // ("capture.depth_readback"; bench lights classes pixels by it)
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
+    // The frame's index in its sequence (capture: the path frame k, negative for settle frames
+    // before the path's start): TAA's jitter and the blue noise's frame index come from it, so a
+    // frame is the same whichever run renders it (docs/farm.md). Unset: frames since the last
+    // resetHistory().
+    std::optional<std::int64_t> sequence_frame;
 };
 
 struct FrameReport {
@@ -91,13 +99,14 @@ public:
     std::unique_ptr<Terrain> releaseTerrain() { return std::move(terrain_); }  // benches swap terrains
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
-
     // Forgets every temporal state, so the next frame renders as the first frame of a fresh
-    // renderer would: the post chain's history (exposure, autofocus, motion blur, lens flare) and
-    // weather's previous camera. Captures call it before the settle frames of each run of written
+    // renderer would: the post chain's history (exposure, autofocus, motion blur, lens flare),
+    // weather's previous camera, TAA's and the clouds' accumulation and the camera that cut
+    // detection compares with. Captures call it before the settle frames of each run of written
     // frames (app/capture.cpp), which is what makes a frame the same whichever shard renders it;
-    // every new kind of history (TAA, cloud reprojection) must be reset here too.
+    // every new kind of history must be reset here too (docs/temporal.md, docs/farm.md).
     void resetHistory();
+    const TemporalAA* taa() const { return taa_.get(); }  // null while [postfx.taa] is off
 
     ShaderLibrary& shaders() { return shaders_; }
     PassTimers& timers() { return timers_; }
@@ -109,7 +118,8 @@ public:
     // GPU bytes the renderer holds: the transient pool, every feature's long-lived objects and
     // the frame's own buffers. Per feature in the frame's "FEATURE.memory_bytes" counters.
     std::size_t gpuMemoryBytes() const;
-    RenderContext context(const ViewParams& view, const Settings& settings, double time_s);
+    // jitter_px: the TAA's sub-pixel shift of the projection this frame (none by default).
+    RenderContext context(const ViewParams& view, const Settings& settings, double time_s, glm::dvec2 jitter_px = {});
     // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
     double measureReferenceCopy(int width, int height);
     std::uint64_t frameIndex() const { return frame_; }
@@ -146,6 +156,13 @@ private:
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
+    BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
+    std::unique_ptr<TemporalAA> taa_;     // null while [postfx.taa] is off
+    ViewParams last_view_;                // the previous frame's camera, for camera-cut detection
+    double last_time_s_ = 0.0;
+    bool has_last_view_ = false;
+    std::uint64_t temporal_index_ = 0;    // frames since resetHistory(): the jitter's index without a sequence_frame
+    std::uint64_t sequence_index_ = 0;    // this frame's jitter and blue-noise index (render(), FrameRequest::sequence_frame)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame

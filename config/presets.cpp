@@ -77,6 +77,12 @@ void setSsrSteps(Settings& s, double v, const Settings&) {
     if (v > 0.0) s.water.ssr_steps = toInt(v);
 }
 double ssrSteps(const Settings& s) { return s.water.reflection == WaterReflection::Sky ? 0.0 : double(s.water.ssr_steps); }
+bool postfxOn(const Settings& s) { return s.postfx.enabled; }
+void setTaa(Settings& s, double v, const Settings&) {
+    s.taa.enabled = v != 0.0;
+    s.fxaa.enabled = v == 0.0;
+}
+double taaOn(const Settings& s) { return s.taa.enabled ? 1.0 : 0.0; }
 
 // The table: key, unit, {low, medium, high, ultra, reference}, whether the scene uses it.
 const QualityKnob kKnobs[] = {
@@ -122,7 +128,9 @@ const QualityKnob kKnobs[] = {
     {"water.grid_segments", "", {64, 96, 128, 192, 256}, waterOn},
     {"water.ssr_steps", "steps", {0, 16, 24, 48, 128}, waterOn, setSsrSteps, ssrSteps, "sky"},
     {"water.waves", "", {16, 20, 24, 32, 32}, waterOn},
-    // Post chain (keys of [postfx.NAME]).
+    // Post chain (keys of [postfx.NAME]). Anti-aliasing: TAA (postfx/taa.h) from medium up; the
+    // low preset keeps FXAA, one full-screen pass without history.
+    {"postfx.taa", "", {0, 1, 1, 1, 1}, postfxOn, setTaa, taaOn, nullptr, true},
     {"ssao.directions", "", {2, 3, 4, 8, 16}, ssaoOn},
     {"ssao.steps", "steps", {3, 4, 4, 8, 32}, ssaoOn},
     {"ssao.half_resolution", "", {1, 1, 1, 0, 0}, ssaoOn, nullptr, nullptr, nullptr, true, true},

@@ -228,6 +228,8 @@ struct CloudsSettings {
     bool half_resolution = true;     //!< march at half size ("clouds.half"), upsampled by "clouds.composite"
     float coverage_variation = 0.1f; //!< coverage of every layer swings by +-this over coverage_period_s, 0..1
     float coverage_period_s = 1800.0f; //!< s, period of the coverage swing, 1..1e7
+    bool temporal = true;            //!< accumulate the march over frames ("clouds.temporal", docs/temporal.md)
+    float temporal_blend = 0.0625f;  //!< share of this frame's march once history is full, 0.01..1 (1: no history)
     bool shadows = true;             //!< cloud shadows on the terrain ("clouds.shadow"): sun light through the layers
     int shadow_size = 256;           //!< texels per side of the shadow map, 16..2048
     float shadow_extent_km = 16.0f;  //!< km covered by the shadow map around the camera, 0.1..1000
@@ -314,10 +316,24 @@ struct BloomSettings {
 
 //! FXAA 3.11-style anti-aliasing on the display image (luma edges).
 struct FxaaSettings {
-    bool enabled = true;
+    bool enabled = false;  //!< off by default: TAA ([postfx.taa]) anti-aliases; the low preset uses FXAA instead
     float edge_threshold = 0.125f;     //!< smallest local contrast treated as an edge, 0.01..1
     float edge_threshold_min = 0.0312f;//!< contrast below this (dark areas) is never an edge, 0..1
     float subpixel = 0.75f;            //!< sub-pixel aliasing removal (0 off, 1 soft), 0..1
+};
+
+//! Temporal anti-aliasing (postfx/taa.h, docs/temporal.md): a Halton sub-pixel jitter of the
+//! projection and a resolve of the linear HDR image against its reprojected history, run on the
+//! scene's HDR image before the post chain (so before tone mapping and in HDR captures).
+//! cut_distance_m / cut_angle_deg also decide when the clouds' history is dropped.
+struct TaaSettings {
+    bool enabled = true;
+    float blend = 0.1f;            //!< share of the current frame in the result, 0.02..1 (1: history off)
+    float clip_gamma = 1.25f;      //!< neighbourhood box half-size in standard deviations, 0.5..4
+    float sharpen = 0.25f;         //!< unsharp mask of the history against its bilinear fetch, 0..1
+    float disocclusion = 0.05f;    //!< relative depth difference that rejects history, 0.001..1
+    float cut_distance_m = 100.0f; //!< m, a camera jump beyond this between frames is a cut (history dropped)
+    float cut_angle_deg = 30.0f;   //!< deg, a camera turn beyond this between frames is a cut
 };
 
 //! Colour grading on the display image: lift/gamma/gain per channel, saturation, vignette.
@@ -496,6 +512,7 @@ struct Settings {
     TonemapSettings tonemap;    // [postfx.tonemap]
     BloomSettings bloom;        // [postfx.bloom]
     FxaaSettings fxaa;          // [postfx.fxaa]
+    TaaSettings taa;            // [postfx.taa]
     GradeSettings grade;        // [postfx.grade]
     SsaoSettings ssao;          // [postfx.ssao]
     DofSettings dof;            // [postfx.dof]

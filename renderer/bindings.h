@@ -29,6 +29,7 @@ constexpr int kSpotShadowMap = 10;      // texture unit: spot shadow atlas, dept
 constexpr int kSpotShadowDepth = 11;    // texture unit: the same atlas, raw depth (PCSS blocker search, debug view)
 constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (terrain/grass/shaders/grass_common.glsl)
 constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
+constexpr int kBlueNoise = 15;     // texture unit: the blue-noise map (renderer/blue_noise.h), bound every frame
 constexpr int kWeatherCells = 8;   // shader storage: the rain's visible drop cells (sky/weather/shaders/weather_rain.glsl)
 
 }  // namespace vista::binding

@@ -7,6 +7,7 @@
 #include "renderer/gl_device.h"
 #include "renderer/shader_library.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstdint>
@@ -22,7 +23,7 @@ struct FrameUniforms {
     glm::vec4 camera_world;
     glm::vec4 sun_dir;   // xyz towards the sun, w illuminance
     glm::vec4 viewport;  // w, h, 1/w, 1/h
-    glm::vec4 time;      // x scene time (s), y frame index
+    glm::vec4 time;      // x scene time (s), y frame index, z temporal index (frames since FrameRenderer::resetHistory)
     glm::vec4 near;      // x near plane (m)
 };
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 5 * 16, "FrameUniforms must match the std140 block");
@@ -39,6 +40,9 @@ struct RenderContext {
     // (the lens flare): they read it here rather than from the sky's settings.
     glm::dvec3 sun_direction{0.0, 1.0, 0.0};  // unit vector towards the sun
     float sun_illuminance = 0.0f;
+    // The TAA's sub-pixel shift of this frame's projection in NDC (already in `matrices` and the
+    // frame uniforms; `view` is unjittered). Temporal passes take it out when they reproject.
+    glm::vec2 jitter_ndc{0.0f};
 };
 
 // Draws a full-screen triangle with the bound program.

@@ -40,6 +40,7 @@ struct Rendered {
 Rendered render(const Settings& s, const ViewParams& view, double t = 0.0) {
     FrameRenderer& r = renderer();
     REQUIRE(r.prepare(s).empty());
+    r.resetHistory();  // each frame the first of a run: frames compare without history or jitter differences
     FrameRequest request;
     request.count_nonfinite = true;
     test::RenderedFrame f = test::renderFrame(r, s, view, t, request);

@@ -115,6 +115,8 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
          [](FrameRenderer& r) { return r.postfx().autoExposure() == nullptr; }},
         {"tonemap", [](Settings& s) { s.tonemap.enabled = false; }, {"postfx.tonemap"}, nullptr, nullptr},
         {"fxaa", [](Settings& s) { s.fxaa.enabled = false; }, {"postfx.fxaa"}, nullptr, nullptr},
+        {"taa", [](Settings& s) { s.taa.enabled = false; }, {"postfx.taa"}, nullptr,
+         [](FrameRenderer& r) { return r.taa() == nullptr; }},
         {"grade", [](Settings& s) { s.grade.enabled = false; }, {"postfx.grade"}, nullptr, nullptr},
         {"night_vision", [](Settings& s) { s.night_vision.enabled = false; }, {"postfx.night_vision"}, nullptr, nullptr},
         {"dof", [](Settings& s) { s.dof.enabled = false; }, {"postfx.dof"}, nullptr,

@@ -69,6 +69,7 @@ Lit render(Settings s, LightCulling method, const ViewParams& view, double t = 0
     FrameRequest request;
     request.count_lights = true;
     request.count_nonfinite = true;
+    renderer().resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     test::RenderedFrame f = test::renderFrame(renderer(), s, view, t, request);
     return Lit{std::move(f.rgba), f.counter("lights.evaluations"), f.counter("lights.exact"), f.counter("lights.overflow"),
                f.counter("nonfinite_pixels"), std::move(f.report.executed)};
@@ -254,6 +255,7 @@ TEST_CASE("gl: forward light lists cover transparent surfaces in front of the op
         std::vector<unsigned char> ldr;
         request.capture_ldr = &ldr;
         request.forward_lights = forward;
+        r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
         r.render(s, kView, 0.0, request);
         REQUIRE(r.localLights());
         const std::vector<float> texels = drawProbe("tests/gl/shaders/forward_probe.glsl", r.localLights()->define(), w, h);
@@ -309,6 +311,7 @@ TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (
         FrameRequest request;
         std::vector<unsigned char> ldr;
         request.capture_ldr = &ldr;
+        r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
         r.render(s, kView, 0.0, request);
         const std::vector<float> gpu = drawProbe("tests/gl/shaders/light_reference_probe.glsl", "LIGHTS_NAIVE", w, h);
 

@@ -51,6 +51,7 @@ struct Frame {
 
 Frame render(const Settings& s, const ViewParams& view) {
     useHills(s);
+    renderer().resetHistory();  // each frame as the first of a run: no TAA history or jitter to tell them apart
     FrameRequest request;
     request.count_lights = true;
     test::RenderedFrame f = test::renderFrame(renderer(), s, view, 0.0, request);

@@ -118,6 +118,13 @@ TEST_CASE("gl: the post chain runs in [postfx] order, disabled effects add no pa
     bench.chainRun(image, 32, 18, s);
     std::vector<std::string> passes = postfxPasses(bench.executed);
     REQUIRE(!passes.empty());
+    CHECK_FALSE(has(passes, "postfx.fxaa"));  // off by default: TAA anti-aliases (docs/temporal.md)
+    CHECK(passes.back() == "postfx.tonemap");
+
+    s.fxaa.enabled = true;  // the low preset's anti-aliasing; on here so the order covers every effect
+    bench.chainRun(image, 32, 18, s);
+    passes = postfxPasses(bench.executed);
+    REQUIRE(!passes.empty());
     CHECK(passes.front() == "postfx.bloom.down1");
     CHECK(passes.back() == "postfx.fxaa");
     const auto at = [&](const std::string& name) { return std::find(passes.begin(), passes.end(), name) - passes.begin(); };

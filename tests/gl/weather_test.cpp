@@ -41,6 +41,9 @@ Settings weatherScene(const std::filesystem::path& map, const glm::dvec3& origin
     s.clouds.enabled = false;
     s.debug.grid = false;
     s.lights.enabled = false;
+    // No TAA jitter or history, as the image checks expect; not resetHistory() per frame, which
+    // would also forget weather's previous camera (the streak velocity the tests check).
+    s.taa.enabled = false;
     s.weather.enabled = true;
     s.weather.intensity = 1.0f;
     return s;
