@@ -14,7 +14,7 @@ FUZZ_PACKAGES := $(shell grep -v '^\#' tools/fuzz-packages.txt)
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 FUZZ_DIR   ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := ini camera_path heightmap
+FUZZ_TARGETS := ini camera_path heightmap gltf
 SANITIZE_DIR ?= build-sanitize
 # Mesa (llvmpipe under OSMesa) is not built with the sanitizers and keeps allocations until exit:
 # leaks are not checked in the tests; every other AddressSanitizer check is.

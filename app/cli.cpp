@@ -18,6 +18,7 @@
 #include "app/scene.h"
 #include "app/scene_check.h"
 #include "terrain/gen_heightmap.h"
+#include "renderer/meshes/gen_props.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -456,6 +457,13 @@ int runCommand(int argc, char** argv) {
     gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
     gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
+    std::string props_out = "data/props";
+    std::uint32_t props_seed = 1;
+    bool props_force = false;
+    CLI::App* props_cmd = app.add_subcommand("gen-props", "write the procedural props (tree.glb, rock.glb, house.glb) into a folder");
+    props_cmd->add_option("--out", props_out, "folder to write into (default data/props, relative to the working directory)");
+    props_cmd->add_option("--seed", props_seed, "random seed of the tree and the rock")->check(kDecimal);
+    props_cmd->add_flag("--force", props_force, "replace existing files");
 
     try {
         app.parse(argc, argv);
@@ -475,6 +483,7 @@ int runCommand(int argc, char** argv) {
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
+    if (*props_cmd) return runGenProps(props_out, props_seed, props_force);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;
