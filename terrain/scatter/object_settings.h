@@ -34,7 +34,7 @@
 namespace vista {
 
 struct ObjectInstanceSpec {
-    std::string file;
+    std::string file = "data/props/house.glb";  // a default that parses (what an editor adds)
     glm::dvec3 position{0.0};
     float ground_m = -1.0f;  // >= 0: stand this high above the terrain (y ignored)
     float yaw_deg = 0.0f;
@@ -43,7 +43,7 @@ struct ObjectInstanceSpec {
 };
 
 struct ScatterRule {
-    std::vector<std::string> files;
+    std::vector<std::string> files{"data/props/tree.glb"};
     double density = 0.001;  // per m^2
     float height_min_m = -1.0e4f, height_max_m = 1.0e4f;
     float slope_max = 100.0f;
