@@ -5,6 +5,7 @@
 #include "config/presets.h"
 
 #include "app/bench_grass.h"
+#include "app/bench_objects.h"
 #include "app/bench_scene.h"
 #include "app/bench_lights.h"
 #include "app/bench_shadows.h"
@@ -397,6 +398,19 @@ int runCommand(int argc, char** argv) {
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
     bench_shadows->add_flag("--force", shadows_opts.force, "replace an existing --json file");
+    SceneOptions objects_scene;
+    BenchObjectsOptions objects_opts;
+    std::string objects_backend = "osmesa", objects_size, objects_json;
+    std::vector<int> objects_trees;
+    CLI::App* bench_objects = bench_cmd->add_subcommand("objects", "objects: a forest of N trees, instances and triangles drawn, GPU cost");
+    objects_scene.add(bench_objects);
+    bench_objects->add_option("--trees", objects_trees, "tree counts, e.g. 1000,10000,100000 (the default)")
+        ->delimiter(',')->check(CLI::Range(1, 10000000));
+    bench_objects->add_option("--size", objects_size, "frame size WxH (default 640x360)");
+    bench_objects->add_option("--frames", objects_opts.frames, "timed frames per count, after two warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
+    bench_objects->add_option("--backend", objects_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_objects->add_option("--json", objects_json, "also write the results as JSON");
+    bench_objects->add_flag("--force", objects_opts.force, "replace an existing --json file");
     SceneOptions grass_scene;
     BenchGrassOptions grass_opts;
     std::string grass_backend = "osmesa", grass_size, grass_json;
@@ -556,6 +570,18 @@ int runCommand(int argc, char** argv) {
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(isolateBenchScene("shadows", s, benchKeptSections("shadows"), benchFixedKeys("shadows"), shadows_scene.overrides),
                               shadows_opts);
+    }
+    if (*bench_objects) {
+        Settings s;
+        if (!objects_scene.load(s)) return 2;
+        if (!objects_size.empty() && !parseSize(objects_size, objects_opts.width, objects_opts.height)) return 2;
+        if (!objects_trees.empty()) objects_opts.trees = objects_trees;
+        objects_opts.json = objects_json;
+        if (int code = checkBenchJson(objects_opts.json, objects_opts.force)) return code;
+        objects_opts.backend = objects_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchObjects(isolateBenchScene("objects", s, benchKeptSections("objects"), benchFixedKeys("objects"),
+                                                 objects_scene.overrides),
+                               objects_opts);
     }
     if (*bench_grass) {
         Settings s;
