@@ -14,7 +14,7 @@ FUZZ_PACKAGES := $(shell grep -v '^\#' tools/fuzz-packages.txt)
 SUDO       := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 FUZZ_DIR   ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := ini camera_path heightmap dem
+FUZZ_TARGETS := ini camera_path heightmap dem gltf
 SANITIZE_DIR ?= build-sanitize
 # Left out of the sanitizer run: drivers that only re-run vista's commands already run there
 # (the quality sweep, the bench-gpu script, the Slurm cluster); they keep CI within its hour.

@@ -100,6 +100,7 @@ std::vector<std::string> benchKeptSections(const std::string& bench) {
     if (bench == "sky") return {"sky", "clouds"};
     if (bench == "shadows") return {"terrain", "shadows", "sky", "lights"};
     if (bench == "grass") return {"terrain", "grass"};
+    if (bench == "objects") return {"terrain", "objects"};
     if (bench == "terrain") return {"terrain"};
     if (bench == "lights") return {"terrain", "lights"};
     return {};

@@ -203,6 +203,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     request.count_nonfinite = want_stats;
     request.count_lights = want_stats;
     request.count_grass = want_stats;
+    request.count_objects = want_stats;
     request.count_weather = want_stats;
 
     std::string dot;  // the last frame's graph, with --dot

@@ -5,6 +5,7 @@
 #include "config/presets.h"
 
 #include "app/bench_grass.h"
+#include "app/bench_objects.h"
 #include "app/bench_scene.h"
 #include "app/bench_lights.h"
 #include "app/bench_shadows.h"
@@ -19,6 +20,7 @@
 #include "app/scene_check.h"
 #include "terrain/gen_heightmap.h"
 #include "app/terrain_cache_cmd.h"
+#include "renderer/meshes/gen_props.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -400,6 +402,19 @@ int runCommand(int argc, char** argv) {
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
     bench_shadows->add_flag("--force", shadows_opts.force, "replace an existing --json file");
+    SceneOptions objects_scene;
+    BenchObjectsOptions objects_opts;
+    std::string objects_backend = "osmesa", objects_size, objects_json;
+    std::vector<int> objects_trees;
+    CLI::App* bench_objects = bench_cmd->add_subcommand("objects", "objects: a forest of N trees, instances and triangles drawn, GPU cost");
+    objects_scene.add(bench_objects);
+    bench_objects->add_option("--trees", objects_trees, "tree counts, e.g. 1000,10000,100000 (the default)")
+        ->delimiter(',')->check(CLI::Range(1, 10000000));
+    bench_objects->add_option("--size", objects_size, "frame size WxH (default 640x360)");
+    bench_objects->add_option("--frames", objects_opts.frames, "timed frames per count, after two warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
+    bench_objects->add_option("--backend", objects_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_objects->add_option("--json", objects_json, "also write the results as JSON");
+    bench_objects->add_flag("--force", objects_opts.force, "replace an existing --json file");
     SceneOptions grass_scene;
     BenchGrassOptions grass_opts;
     std::string grass_backend = "osmesa", grass_size, grass_json;
@@ -460,6 +475,13 @@ int runCommand(int argc, char** argv) {
     gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
     gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
+    std::string props_out = "data/props";
+    std::uint32_t props_seed = 1;
+    bool props_force = false;
+    CLI::App* props_cmd = app.add_subcommand("gen-props", "write the procedural props (tree.glb, rock.glb, house.glb) into a folder");
+    props_cmd->add_option("--out", props_out, "folder to write into (default data/props, relative to the working directory)");
+    props_cmd->add_option("--seed", props_seed, "random seed of the tree and the rock")->check(kDecimal);
+    props_cmd->add_flag("--force", props_force, "replace existing files");
 
     TerrainCacheOptions cache_opts;
     CLI::App* cache_cmd = app.add_subcommand("terrain-cache", "build the tile cache (LOD pyramid on disk) of a DEM or heightmap once (docs/dem.md)");
@@ -494,6 +516,7 @@ int runCommand(int argc, char** argv) {
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
     if (*cache_cmd) return runTerrainCache(cache_opts);
+    if (*props_cmd) return runGenProps(props_out, props_seed, props_force);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;
@@ -566,6 +589,18 @@ int runCommand(int argc, char** argv) {
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(isolateBenchScene("shadows", s, benchKeptSections("shadows"), benchFixedKeys("shadows"), shadows_scene.overrides),
                               shadows_opts);
+    }
+    if (*bench_objects) {
+        Settings s;
+        if (!objects_scene.load(s)) return 2;
+        if (!objects_size.empty() && !parseSize(objects_size, objects_opts.width, objects_opts.height)) return 2;
+        if (!objects_trees.empty()) objects_opts.trees = objects_trees;
+        objects_opts.json = objects_json;
+        if (int code = checkBenchJson(objects_opts.json, objects_opts.force)) return code;
+        objects_opts.backend = objects_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchObjects(isolateBenchScene("objects", s, benchKeptSections("objects"), benchFixedKeys("objects"),
+                                                 objects_scene.overrides),
+                               objects_opts);
     }
     if (*bench_grass) {
         Settings s;

@@ -17,6 +17,7 @@
 #include "sky/clouds/clouds.h"
 #include "sky/weather/weather.h"
 #include "sky/weather/weather_model.h"
+#include "terrain/material_weights.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -63,6 +64,7 @@ std::vector<ProgramKey> allPrograms() {
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : waterPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : objectPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -88,6 +90,7 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
 InputErrors FrameRenderer::prepare(const Settings& s) {
     InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
+        objects_.reset();  // objects stand on the terrain
         terrain_.reset();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;
         return errors;
@@ -97,12 +100,46 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
     wanted.dem = resolveInput(s.terrain.dem).string();
     bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
                                                            terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid;
-    if (same) return errors;
-    terrain_.reset();
-    terrain_ = Terrain::load(wanted, shaders_, errors);
-    terrain_source_ = wanted;
-    terrain_failed_ = terrain_ == nullptr;
+    if (!same) {
+        objects_.reset();  // placed on the old terrain
+        terrain_.reset();
+        terrain_ = Terrain::load(wanted, shaders_, errors);
+        terrain_source_ = wanted;
+        terrain_failed_ = terrain_ == nullptr;
+    }
+    prepareObjects(s, errors);
     return errors;
+}
+
+void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
+    if (!terrain_ || !objectsWanted(s.objects)) {
+        objects_.reset();  // nothing placed: no object, no buffers
+        return;
+    }
+    if (!objects_) objects_ = std::make_unique<Objects>();
+    const Terrain* t = terrain_.get();
+    const TerrainSettings ts = s.terrain;
+    const TerrainMapping& m = t->mapping();
+    // The ground under a point: height, slope from central differences over 1 m, and the
+    // terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
+    GroundFunction ground = [t, ts, m](double x, double z) {
+        GroundSample g;
+        const double half = m.size_m * 0.5;
+        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
+        g.valid = true;
+        g.height_m = t->heightAt(x, z);
+        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
+        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
+        g.slope = std::sqrt(dx * dx + dz * dz);
+        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
+        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
+        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
+        return g;
+    };
+    const double half = m.size_m * 0.5;
+    const ScatterArea area{{ts.origin.x - half, ts.origin.z - half}, {ts.origin.x + half, ts.origin.z + half}};
+    if (!objects_->prepare(s.objects, ground, area, [](const std::string& f) { return resolveInput(f); }, errors))
+        objects_.reset();
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
@@ -347,6 +384,25 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (blades.valid() && s.grass.cast_shadows)
         grass_caster = {blades, double(s.grass.radius_m),
                         [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }};
+    // Objects are culled next; their cull pass follows the grass's, so the one caster handle the
+    // shadow passes read orders them after both.
+    BufferHandle object_lists;
+    if (terrain && objects_ && s.objects.enabled && !shadow_view) {
+        object_lists = objects_->addCullPass(graph, rc, s.objects, counters_, request.count_objects, grass_caster.reads);
+        const ObjectStats& st = objects_->stats();
+        report.counters["objects.models"] = double(st.models);
+        report.counters["objects.placed"] = double(st.instances);
+    } else if (!terrain) {
+        objects_.reset();
+    }
+    if (object_lists.valid() && s.objects.cast_shadows) {
+        auto grass_draw = grass_caster.draw;
+        grass_caster = {object_lists, std::max(grass_caster.valid() ? grass_caster.reach_m : 0.0, double(s.objects.shadow_distance_m)),
+                        [this, &rc, grass_draw](const glm::mat4& m) {
+                            if (grass_draw) grass_draw(m);
+                            objects_->drawShadow(rc, m);
+                        }};
+    }
     SpotShadowInput spot_input;
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report, grass_caster);
@@ -368,6 +424,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);
+    if (object_lists.valid()) objects_->addGbufferPass(graph, rc, object_lists, scene);
     // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
     const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
     if (clouds) {
@@ -486,6 +543,7 @@ FrameReport FrameRenderer::render(const Settings& s, const ViewParams& view, dou
     if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
     if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
     if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
+    if (objects_) report.counters["objects.memory_bytes"] = double(objects_->memoryBytes());
     if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
     if (const std::size_t postfx = postfx_.memoryBytes() + (taa_ ? taa_->memoryBytes() : 0); postfx > 0)
         report.counters["postfx.memory_bytes"] = double(postfx);
@@ -501,7 +559,8 @@ std::size_t FrameRenderer::gpuMemoryBytes() const {
            (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
            (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
            (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes() +
-           (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes();
+           (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes() +
+           (objects_ ? objects_->memoryBytes() : 0);
 }
 
 }  // namespace vista

@@ -5,6 +5,7 @@
 
 #include "config/settings.h"
 #include "terrain/grass/grass.h"
+#include "renderer/meshes/objects.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_timers.h"
@@ -51,6 +52,7 @@ struct FrameRequest {
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)
+    bool count_objects = false;                    // objects.instances, objects.triangles (drawn, GPU counters)
     bool count_weather = false;                    // weather.drops, weather.splashes (drawn, GPU counters)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::vector<float>* light_heat = nullptr;      // local lights evaluated per pixel, RGBA floats (R used), top row
@@ -92,6 +94,7 @@ public:
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     Weather* weather() { return weather_.get(); }  // null while [weather] is off
     Water* water() { return water_.get(); }  // null while [water] is off
+    Objects* objects() { return objects_.get(); }  // null while [objects] places nothing (or no terrain)
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -130,6 +133,8 @@ private:
     // samples (invalid: no sun shadows).
     SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                              const ViewParams* fit_view, FrameReport& report, const ShadowCaster& extra);
+    // Loads and places [objects] on the terrain (drops the Objects when nothing is placed).
+    void prepareObjects(const Settings& s, InputErrors& errors);
     // This frame's local lights (false: none can light a visible point, add no light pass).
     bool prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report);
     // The shadowed spot lights among them (false: none; then spot_shadows_ is reset).
@@ -155,6 +160,7 @@ private:
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
+    std::unique_ptr<Objects> objects_;    // null while [objects] places nothing (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
     std::unique_ptr<TemporalAA> taa_;     // null while [postfx.taa] is off

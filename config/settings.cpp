@@ -489,6 +489,7 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.weather);
     describe(v, s.lights);  // renderer/lighting/light_settings.cpp
     describe(v, s.water);
+    describe(v, s.objects);  // terrain/scatter/object_settings.cpp
     describe(v, s.postfx);
     describe(v, s.exposure);
     describe(v, s.tonemap);

@@ -5,6 +5,7 @@
 
 #include "config/visitor.h"
 #include "renderer/lighting/light_settings.h"  // LightsSettings: part of vista_config, no renderer code
+#include "terrain/scatter/object_settings.h"  // ObjectsSettings: likewise
 
 #include <glm/vec3.hpp>
 
@@ -507,6 +508,7 @@ struct Settings {
     WeatherSettings weather;    // [weather]
     LightsSettings lights;      // [lights], with the light.NAME / volume.NAME lists
     WaterSettings water;        // [water]
+    ObjectsSettings objects;    // [objects], with the object.NAME / scatter.NAME lists
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]
     TonemapSettings tonemap;    // [postfx.tonemap]

@@ -86,6 +86,25 @@ TEST_CASE("gl: bench grass draws blades in proportion to the density") {
     CHECK(b8 <= r.json["rows"][1]["considered"].get<double>());
 }
 
+TEST_CASE("gl: bench objects places the trees asked for, draws some, keeps 32 bytes + 4 slots an instance") {
+    vista::test::TempDir dir("bench-objects");
+    Run r = bench("objects --size 96x54 --frames 1 --trees 1000,10000", dir);
+    REQUIRE_MESSAGE(r.code == 0, r.output);
+    CAPTURE(r.output);
+    CHECK(contains(r.json["scene"]["disabled"], "grass.enabled=false"));
+    REQUIRE(r.json["rows"].size() == 2);
+    for (const auto& row : r.json["rows"]) {
+        const double trees = row["trees"], placed = row["placed"], drawn = row["drawn"];
+        CHECK(placed == doctest::Approx(trees).epsilon(0.05));  // density x area, every ground accepted
+        CHECK(drawn > 0.0);
+        CHECK(drawn < placed);  // culled on the GPU
+        CHECK(row["triangles"].get<double>() > drawn);
+        CHECK(row["instance_bytes"].get<double>() == placed * 48.0);
+    }
+    // 100,000 trees would hold 4.8 MB of instances and lists, inside the 16 MB.
+    CHECK(100000.0 * 48.0 <= 16.0e6);
+}
+
 TEST_CASE("gl: bench lights, every culling method shades every pair that needs it, and culls") {
     vista::test::TempDir dir("bench-lights");
     Run r = bench("lights --size 64x36 --frames 1 --lights 64", dir);

@@ -34,4 +34,9 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
     CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);
     CHECK(binding::kWeatherCells == BINDING_WEATHER_CELLS);
+    CHECK(binding::kObjectInstances == BINDING_OBJECT_INSTANCES);
+    CHECK(binding::kObjectVisible == BINDING_OBJECT_VISIBLE);
+    CHECK(binding::kObjectCounts == BINDING_OBJECT_COUNTS);
+    CHECK(binding::kObjectDraws == BINDING_OBJECT_DRAWS);
+    CHECK(binding::kObjectModels == BINDING_OBJECT_MODELS);
 }
