@@ -16,9 +16,10 @@ FUZZ_DIR   ?= build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_TARGETS := ini camera_path heightmap dem gltf
 SANITIZE_DIR ?= build-sanitize
-# Left out of the sanitizer run: drivers that only re-run vista's commands already run there
-# (the quality sweep, the bench-gpu script, the Slurm cluster); they keep CI within its hour.
-SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster
+# Left out of the sanitizer run, to keep CI within its hour: drivers that only re-run vista's
+# commands already run there (the quality sweep, the bench-gpu script, the Slurm cluster) and
+# the extreme-scene sweep (minutes under the sanitizers; the plain build runs it).
+SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster|extreme scenes .config
 # Mesa (llvmpipe under OSMesa) is not built with the sanitizers and keeps allocations until exit:
 # leaks are not checked in the tests; every other AddressSanitizer check is.
 export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

@@ -55,6 +55,7 @@ std::vector<std::uint16_t> render(FrameRenderer& r, const Settings& s, const Vie
     std::vector<std::uint16_t> hdr;
     FrameRequest request;
     request.capture_hdr = &hdr;
+    r.resetHistory();  // each frame the first of a run: the same TAA jitter and no history
     r.render(s, view, 0.0, request);
     return hdr;
 }
