@@ -3,6 +3,7 @@
 // a frame-graph readback pass.
 #pragma once
 
+#include "../temp_dir.h"
 #include "app/gl_context.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
@@ -77,19 +78,5 @@ inline void addReadback(FrameGraph& graph, TextureHandle texture, std::vector<fl
             out = readRgba(ctx.texture(d.t), desc.width, desc.height);
         });
 }
-
-// A fresh empty directory under the system temp dir, removed at scope exit.
-struct TempDir {
-    std::filesystem::path path;
-    explicit TempDir(const std::string& name) {
-        path = std::filesystem::temp_directory_path() / ("vista-test-" + name + "-" + std::to_string(::getpid()));
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path, ec);
-    }
-};
 
 }  // namespace vista::test

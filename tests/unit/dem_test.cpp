@@ -1,6 +1,7 @@
 // DEMs through GDAL (terrain/dem.h): GeoTIFFs, an SRTM tile, an ESRI ASCII grid and a VRT of
 // four tiles written by GDAL inside the test load with the right spacing and heights; nodata is
 // filled or refused; unsupported input is refused naming the file and the reason.
+#include "../temp_dir.h"
 #include "terrain/dem.h"
 
 #include <doctest/doctest.h>
@@ -18,16 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("vista-dem-" + name + "-" + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    fs::path operator/(const std::string& file) const { return path / file; }
-};
+using test::TempDir;
 
 struct Raster {
     Raster(int w, int h, int b, GDALDataType t, std::vector<double> v, std::optional<std::array<double, 6>> gt, int crs,

@@ -1,6 +1,7 @@
 // The terrain tile cache (terrain/tile_cache.h): a round trip equals the pyramid built in
 // memory, tile errors bound what each level misses of the full map, and a truncated, damaged
 // or stale cache is found.
+#include "../temp_dir.h"
 #include "terrain/tile_cache.h"
 
 #include <doctest/doctest.h>
@@ -14,16 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("vista-tilecache-" + name + "-" + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    fs::path operator/(const std::string& file) const { return path / file; }
-};
+using test::TempDir;
 
 // A small island: the generator the default scene's map comes from, at a non-2^n+1 size too.
 Heightmap island(int size) {
