@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdio>
+#include <utility>
 
 namespace vista {
 namespace {
@@ -20,20 +21,14 @@ bool underAny(const std::string& section, const std::vector<std::string>& roots)
     return false;
 }
 
-// Sets `enabled` false in every section outside keep (and not named by the user); records them.
-class Isolate final : public SettingsVisitor {
+// Calls on(section, value) for every section's `enabled` key; on may change the value.
+template <class OnEnabled>
+class EachEnabled final : public SettingsVisitor {
 public:
-    Isolate(const std::vector<std::string>& keep, const std::vector<std::string>& user) : keep_(keep), user_(user) {}
-    std::vector<std::string> disabled;
-
+    explicit EachEnabled(OnEnabled on) : on_(std::move(on)) {}
     void section(const char* name, const char*) override { section_ = name; }
     void field(const FieldInfo& info, bool& value) override {
-        if (std::string(info.key) != "enabled" || !value || underAny(section_, keep_)) return;
-        const std::string key = section_ + ".enabled";
-        for (const std::string& u : user_)
-            if (u.rfind(key + "=", 0) == 0) return;  // the user's --set wins
-        value = false;
-        disabled.push_back(key + "=false");
+        if (std::string(info.key) == "enabled") on_(section_, value);
     }
     void field(const FieldInfo&, int&, int, int) override {}
     void field(const FieldInfo&, float&, float, float) override {}
@@ -45,31 +40,15 @@ public:
     void list(const FieldInfo&, ListField&) override {}
 
 private:
-    const std::vector<std::string>& keep_;
-    const std::vector<std::string>& user_;
+    OnEnabled on_;
     std::string section_;
 };
 
-// Lists the sections whose `enabled` is true.
-class ListEnabled final : public SettingsVisitor {
-public:
-    std::vector<std::string> sections;
-    void section(const char* name, const char*) override { section_ = name; }
-    void field(const FieldInfo& info, bool& value) override {
-        if (std::string(info.key) == "enabled" && value) sections.push_back(section_);
-    }
-    void field(const FieldInfo&, int&, int, int) override {}
-    void field(const FieldInfo&, float&, float, float) override {}
-    void field(const FieldInfo&, double&, double, double) override {}
-    void field(const FieldInfo&, glm::vec3&, float, float) override {}
-    void field(const FieldInfo&, glm::dvec3&, double, double) override {}
-    void field(const FieldInfo&, std::string&) override {}
-    void choice(const FieldInfo&, int&, std::span<const char* const>) override {}
-    void list(const FieldInfo&, ListField&) override {}
-
-private:
-    std::string section_;
-};
+template <class OnEnabled>
+void forEachEnabled(Settings& s, OnEnabled on) {
+    EachEnabled<OnEnabled> visitor(std::move(on));
+    describe(visitor, s);
+}
 
 std::string join(const std::vector<std::string>& items) {
     std::string out;
@@ -82,9 +61,15 @@ std::string join(const std::vector<std::string>& items) {
 BenchScene isolateBenchScene(const std::string& bench, const Settings& scene, const std::vector<std::string>& keep,
                              const std::vector<std::string>& fixed, const std::vector<std::string>& user_overrides) {
     BenchScene b{bench, keep, {}, fixed, user_overrides, scene};
-    Isolate isolate(keep, user_overrides);
-    describe(isolate, b.settings);
-    b.disabled = std::move(isolate.disabled);
+    // Sets `enabled` false in every section outside keep (and not named by the user).
+    forEachEnabled(b.settings, [&](const std::string& section, bool& enabled) {
+        if (!enabled || underAny(section, keep)) return;
+        const std::string key = section + ".enabled";
+        for (const std::string& u : user_overrides)
+            if (u.rfind(key + "=", 0) == 0) return;  // the user's --set wins
+        enabled = false;
+        b.disabled.push_back(key + "=false");
+    });
     for (const std::string& f : fixed) {
         [[maybe_unused]] InputErrors errors = applyOverride(f, b.settings);
         assert(errors.empty() && "a bench's fixed key does not parse");
@@ -103,16 +88,19 @@ nlohmann::json BenchScene::json() const {
 }
 
 std::vector<std::string> enabledSections(const Settings& scene) {
-    Settings copy = scene;  // describe() takes a mutable struct; this visitor changes nothing
-    ListEnabled list;
-    describe(list, copy);
-    return list.sections;
+    Settings copy = scene;  // describe() takes a mutable struct; nothing here changes it
+    std::vector<std::string> sections;
+    forEachEnabled(copy, [&](const std::string& section, bool& enabled) {
+        if (enabled) sections.push_back(section);
+    });
+    return sections;
 }
 
 std::vector<std::string> benchKeptSections(const std::string& bench) {
     if (bench == "sky") return {"sky", "clouds"};
     if (bench == "shadows") return {"terrain", "shadows", "sky", "lights"};
     if (bench == "grass") return {"terrain", "grass"};
+    if (bench == "objects") return {"terrain", "objects"};
     if (bench == "terrain") return {"terrain"};
     if (bench == "lights") return {"terrain", "lights"};
     return {};

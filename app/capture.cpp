@@ -39,6 +39,7 @@ std::string checkCaptureOutputs(const CaptureJob& job) {
     std::vector<std::filesystem::path> inputs = job.inputs;
     inputs.push_back(resolveInput(c.path));
     inputs.push_back(resolveInput(job.settings.terrain.heightmap));
+    if (!job.settings.terrain.dem.empty()) inputs.push_back(resolveInput(job.settings.terrain.dem));
     if (!job.settings.grade.lut.empty()) inputs.push_back(resolveInput(job.settings.grade.lut));
     const std::pair<const char*, const std::filesystem::path*> outputs[] = {{"--stats", &job.stats_file},
                                                                             {"--dot", &job.dot_file}};
@@ -202,6 +203,7 @@ CaptureResult runCapture(const CaptureJob& job) {
     request.count_nonfinite = want_stats;
     request.count_lights = want_stats;
     request.count_grass = want_stats;
+    request.count_objects = want_stats;
     request.count_weather = want_stats;
 
     std::string dot;  // the last frame's graph, with --dot
@@ -212,6 +214,7 @@ CaptureResult runCapture(const CaptureJob& job) {
         CameraPose pose = path.sample(t);
         ViewParams view{pose.position, pose.yaw_deg, pose.pitch_deg, pose.fov_deg, s.camera.near_m, c.width, c.height};
         request.graph_dot = last && !job.dot_file.empty() ? &dot : nullptr;
+        request.sequence_frame = frame;  // the jitter and blue noise follow the path frame, not the run
         return renderer.render(s, view, t, request);
     };
     auto flushStats = [&](bool wait) {

@@ -5,6 +5,7 @@
 #include "config/presets.h"
 
 #include "app/bench_grass.h"
+#include "app/bench_objects.h"
 #include "app/bench_scene.h"
 #include "app/bench_lights.h"
 #include "app/bench_shadows.h"
@@ -20,6 +21,8 @@
 #include "app/scene_check.h"
 #include "terrain/terrain.h"
 #include "terrain/gen_heightmap.h"
+#include "app/terrain_cache_cmd.h"
+#include "renderer/meshes/gen_props.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -247,12 +250,14 @@ int check(const SceneOptions& scene) {
     // Everything a capture validates before rendering, without a GL context.
     InputErrors warnings;
     if (errors.empty()) {
-        Heightmap map;
-        InputErrors more = validateSceneInputs(s, &map);
+        CheckedTerrain checked;
+        InputErrors more = validateSceneInputs(s, &checked);
         errors.insert(errors.end(), more.begin(), more.end());
         GroundHeight terrain;
-        if (!map.samples.empty())
-            terrain = [&map, &t = s.terrain](double x, double z) { return terrainHeightAt(map, t, x, z); };
+        if (!checked.map.samples.empty())
+            terrain = [&checked, origin = s.terrain.origin](double x, double z) {
+                return terrainHeightAt(checked.map, checked.mapping, origin, x, z);
+            };
         warnings = checkLightPlacement(s, terrain, scene.files(), scene.overrides);
     }
     for (const InputError& w : warnings) std::fprintf(stderr, "vista: warning: %s\n", w.str().c_str());
@@ -328,6 +333,9 @@ int runCommand(int argc, char** argv) {
     capture_opts.add(capture_cmd, true);
     CLI::App* check_cmd = app.add_subcommand("check", "validate a scene file and its camera path; list every problem");
     check_scene.add(check_cmd);
+    bool check_reference = false;
+    check_cmd->add_flag("--reference", check_reference,
+                        "print the scene-file reference (Markdown, from the settings' descriptions; docs/scene-file.md)");
     CLI::App* bench_cmd = app.add_subcommand("bench", "measure per-pass GPU/CPU times");
     bench_cmd->require_subcommand(1);
     CLI::App* bench_frame = bench_cmd->add_subcommand("frame", "whole frames along the capture path");
@@ -405,6 +413,19 @@ int runCommand(int argc, char** argv) {
     bench_shadows->add_flag("--no-reference", shadows_no_reference, "skip the 8192-texel reference (error_vs_reference)");
     bench_shadows->add_option("--json", shadows_json, "also write the results as JSON");
     bench_shadows->add_flag("--force", shadows_opts.force, "replace an existing --json file");
+    SceneOptions objects_scene;
+    BenchObjectsOptions objects_opts;
+    std::string objects_backend = "osmesa", objects_size, objects_json;
+    std::vector<int> objects_trees;
+    CLI::App* bench_objects = bench_cmd->add_subcommand("objects", "objects: a forest of N trees, instances and triangles drawn, GPU cost");
+    objects_scene.add(bench_objects);
+    bench_objects->add_option("--trees", objects_trees, "tree counts, e.g. 1000,10000,100000 (the default)")
+        ->delimiter(',')->check(CLI::Range(1, 10000000));
+    bench_objects->add_option("--size", objects_size, "frame size WxH (default 640x360)");
+    bench_objects->add_option("--frames", objects_opts.frames, "timed frames per count, after two warm-up frames")->check(kDecimal)->check(CLI::Range(1, 1000));
+    bench_objects->add_option("--backend", objects_backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+    bench_objects->add_option("--json", objects_json, "also write the results as JSON");
+    bench_objects->add_flag("--force", objects_opts.force, "replace an existing --json file");
     SceneOptions grass_scene;
     BenchGrassOptions grass_opts;
     std::string grass_backend = "osmesa", grass_size, grass_json;
@@ -465,6 +486,23 @@ int runCommand(int argc, char** argv) {
     gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
     gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
     gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
+    std::string props_out = "data/props";
+    std::uint32_t props_seed = 1;
+    bool props_force = false;
+    CLI::App* props_cmd = app.add_subcommand("gen-props", "write the procedural props (tree.glb, rock.glb, house.glb) into a folder");
+    props_cmd->add_option("--out", props_out, "folder to write into (default data/props, relative to the working directory)");
+    props_cmd->add_option("--seed", props_seed, "random seed of the tree and the rock")->check(kDecimal);
+    props_cmd->add_flag("--force", props_force, "replace existing files");
+
+    TerrainCacheOptions cache_opts;
+    CLI::App* cache_cmd = app.add_subcommand("terrain-cache", "build the tile cache (LOD pyramid on disk) of a DEM or heightmap once (docs/dem.md)");
+    cache_cmd->add_option("file", cache_opts.input, "DEM (GDAL) or heightmap image")->required();
+    cache_cmd->add_option("--out", cache_opts.out, "cache file (default: FILE.vtc)");
+    cache_cmd->add_option("--tile", cache_opts.tile, "samples between tile origins, 2..4096")->check(kDecimal);
+    cache_cmd->add_option("--size-m", cache_opts.size_m, "a heightmap image's extent in m ([terrain] size_m)");
+    cache_cmd->add_option("--height-scale-m", cache_opts.height_scale_m, "a heightmap image's height of value 1 in m");
+    cache_cmd->add_option("--height-offset-m", cache_opts.height_offset_m, "a heightmap image's height of value 0 in m");
+    cache_cmd->add_flag("--force", cache_opts.force, "rebuild even when the cache is up to date");
 
     try {
         app.parse(argc, argv);
@@ -481,9 +519,15 @@ int runCommand(int argc, char** argv) {
     if (*encode_cmd) return runEncode(encode_opts);
     if (*merge_cmd) return runFarmMerge(merge_opts);
     if (*slurm_cmd) return runFarmSlurm(slurm_opts);
+    if (*check_cmd && check_reference) {
+        std::fputs(sceneFileReference().c_str(), stdout);
+        return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : fail(1, "cannot write the reference to stdout");
+    }
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
+    if (*cache_cmd) return runTerrainCache(cache_opts);
+    if (*props_cmd) return runGenProps(props_out, props_seed, props_force);
     if (*bench_frame) return benchFrame(bench_scene, bench_opts, bench_json, bench_warmup, bench_force);
     if (*bench_terrain) {
         Settings s;
@@ -556,6 +600,18 @@ int runCommand(int argc, char** argv) {
         shadows_opts.backend = shadows_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchShadows(isolateBenchScene("shadows", s, benchKeptSections("shadows"), benchFixedKeys("shadows"), shadows_scene.overrides),
                               shadows_opts);
+    }
+    if (*bench_objects) {
+        Settings s;
+        if (!objects_scene.load(s)) return 2;
+        if (!objects_size.empty() && !parseSize(objects_size, objects_opts.width, objects_opts.height)) return 2;
+        if (!objects_trees.empty()) objects_opts.trees = objects_trees;
+        objects_opts.json = objects_json;
+        if (int code = checkBenchJson(objects_opts.json, objects_opts.force)) return code;
+        objects_opts.backend = objects_backend == "egl" ? Backend::Egl : Backend::OSMesa;
+        return runBenchObjects(isolateBenchScene("objects", s, benchKeptSections("objects"), benchFixedKeys("objects"),
+                                                 objects_scene.overrides),
+                               objects_opts);
     }
     if (*bench_grass) {
         Settings s;

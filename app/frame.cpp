@@ -8,6 +8,7 @@
 #include "renderer/debug_view.h"
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
+#include "renderer/temporal.h"
 #include "app/light_placement.h"
 #include "app/scene.h"
 #include "renderer/lighting/deferred.h"
@@ -19,6 +20,7 @@
 #include "sky/clouds/clouds.h"
 #include "sky/weather/weather.h"
 #include "sky/weather/weather_model.h"
+#include "terrain/material_weights.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -60,10 +62,12 @@ std::vector<ProgramKey> allPrograms() {
         programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : taaPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : waterPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : objectPrograms()) programs.push_back({file, defines});
     return programs;
 }
 
@@ -89,20 +93,56 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
 InputErrors FrameRenderer::prepare(const Settings& s) {
     InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
+        objects_.reset();  // objects stand on the terrain
         terrain_.reset();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;
         return errors;
     }
     TerrainSettings wanted = s.terrain;
     wanted.heightmap = resolveInput(s.terrain.heightmap).string();
+    wanted.dem = resolveInput(s.terrain.dem).string();
     bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
-                                                           terrain_source_.grid == wanted.grid;
-    if (same) return errors;
-    terrain_.reset();
-    terrain_ = Terrain::load(wanted, shaders_, errors);
-    terrain_source_ = wanted;
-    terrain_failed_ = terrain_ == nullptr;
+                                                           terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid;
+    if (!same) {
+        objects_.reset();  // placed on the old terrain
+        terrain_.reset();
+        terrain_ = Terrain::load(wanted, shaders_, errors);
+        terrain_source_ = wanted;
+        terrain_failed_ = terrain_ == nullptr;
+    }
+    prepareObjects(s, errors);
     return errors;
+}
+
+void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
+    if (!terrain_ || !objectsWanted(s.objects)) {
+        objects_.reset();  // nothing placed: no object, no buffers
+        return;
+    }
+    if (!objects_) objects_ = std::make_unique<Objects>();
+    const Terrain* t = terrain_.get();
+    const TerrainSettings ts = s.terrain;
+    const TerrainMapping& m = t->mapping();
+    // The ground under a point: height, slope from central differences over 1 m, and the
+    // terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
+    GroundFunction ground = [t, ts, m](double x, double z) {
+        GroundSample g;
+        const double half = m.size_m * 0.5;
+        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
+        g.valid = true;
+        g.height_m = t->heightAt(x, z);
+        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
+        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
+        g.slope = std::sqrt(dx * dx + dz * dz);
+        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
+        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
+        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
+        return g;
+    };
+    const double half = m.size_m * 0.5;
+    const ScatterArea area{{ts.origin.x - half, ts.origin.z - half}, {ts.origin.x + half, ts.origin.z + half}};
+    if (!objects_->prepare(s.objects, ground, area, [](const std::string& f) { return resolveInput(f); }, errors))
+        objects_.reset();
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
@@ -110,23 +150,34 @@ void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
     terrain_failed_ = false;
 }
 
-RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s) {
-    RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s, pre_exposure_};
+RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s,
+                                     glm::dvec2 jitter_px) {
+    RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
+    if (jitter_px != glm::dvec2(0.0)) {
+        applyJitter(rc.matrices, jitter_px, view.width, view.height);
+        rc.jitter_ndc = glm::vec2(2.0 * jitter_px / glm::dvec2(std::max(view.width, 1), std::max(view.height, 1)));
+    }
+    rc.pre_exposure = pre_exposure_;
     FrameUniforms u{};
     u.view = rc.matrices.view;
     u.proj = rc.matrices.proj;
     u.view_proj = rc.matrices.view_proj;
     u.inv_view_proj = rc.matrices.inv_view_proj;
     u.camera_world = glm::vec4(glm::vec3(view.position), 1.0f);
-    // The key light (the sun, or the moon at night) is the one directional light the passes shade.
+    // The sun itself for the CPU passes that want it (the lens flare); the key light (the sun, or
+    // the moon at night) is the one directional light the GPU passes shade.
+    rc.sun_direction = sunDirection(settings.sky);
+    rc.sun_illuminance = settings.sky.sun_illuminance;
+    rc.cd_per_value = luxPerHdrUnit(settings.sky.sun_illuminance);
     const glm::dvec3 key = sky_lighting_.get(settings.sky, view.position).keyDirection();
-    u.sun_dir = glm::vec4(glm::vec3(key), settings.sky.sun_illuminance);
+    u.sun_dir = glm::vec4(glm::vec3(key), rc.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
-    u.time = glm::vec4(float(time_s), float(frame_), 0.0f, 0.0f);
+    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), 0.0f);
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(float(pre_exposure_), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frame_uniforms_.id());
+    glBindTextureUnit(binding::kBlueNoise, blue_noise_.id());
     return rc;
 }
 
@@ -290,6 +341,10 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
 void FrameRenderer::resetHistory() {
     postfx_.resetHistory();
     weather_.reset();  // its previous camera (streak velocity); recreated by the next frame with weather
+    if (taa_) taa_->reset();
+    if (clouds_) clouds_->resetHistory();
+    has_last_view_ = false;
+    temporal_index_ = 0;
 }
 
 FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view, double time_s,
@@ -308,7 +363,29 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         scaled.sky.sun_illuminance = float(double(sky.sun_illuminance) * pre_exposure_);
     }
     const Settings& s = adjusted ? scaled : input;
-    RenderContext rc = context(view, s, time_s);
+    // A camera cut (or time running backwards: a new run) rejects every history this frame.
+    const bool cut = !has_last_view_ || time_s < last_time_s_ ||
+                     cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
+    last_view_ = view;
+    last_time_s_ = time_s;
+    has_last_view_ = true;
+    const bool taa = s.taa.enabled && s.postfx.enabled;
+    if (!taa && taa_) {  // off: no history kept
+        taa_->release(device_);
+        taa_.reset();
+    }
+    // A frame without history (the first after a reset or a cut) is not jittered: nothing
+    // would average its offset out, and it matches an image rendered without TAA.
+    // The index comes from the frame's place in its sequence when the caller knows it (a capture's
+    // path frame), so the jitter does not depend on how many frames this run rendered before;
+    // 65,536 is a whole number of jitter cycles (8) and keeps the index exact in a float uniform.
+    constexpr std::int64_t kIndexPeriod = 65536;
+    sequence_index_ = request.sequence_frame
+                          ? std::uint64_t(((*request.sequence_frame % kIndexPeriod) + kIndexPeriod) % kIndexPeriod)
+                          : temporal_index_ % kIndexPeriod;
+    const glm::dvec2 jitter = taa && !cut ? TemporalAA::jitterPx(sequence_index_) : glm::dvec2(0.0);
+    RenderContext rc = context(view, s, time_s, jitter);
+    ++temporal_index_;
     FrameGraph graph;
 
     const bool terrain = s.terrain.enabled && terrain_;
@@ -336,6 +413,25 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     if (blades.valid() && s.grass.cast_shadows)
         grass_caster = {blades, double(s.grass.radius_m),
                         [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }};
+    // Objects are culled next; their cull pass follows the grass's, so the one caster handle the
+    // shadow passes read orders them after both.
+    BufferHandle object_lists;
+    if (terrain && objects_ && s.objects.enabled && !shadow_view) {
+        object_lists = objects_->addCullPass(graph, rc, s.objects, counters_, request.count_objects, grass_caster.reads);
+        const ObjectStats& st = objects_->stats();
+        report.counters["objects.models"] = double(st.models);
+        report.counters["objects.placed"] = double(st.instances);
+    } else if (!terrain) {
+        objects_.reset();
+    }
+    if (object_lists.valid() && s.objects.cast_shadows) {
+        auto grass_draw = grass_caster.draw;
+        grass_caster = {object_lists, std::max(grass_caster.valid() ? grass_caster.reach_m : 0.0, double(s.objects.shadow_distance_m)),
+                        [this, &rc, grass_draw](const glm::mat4& m) {
+                            if (grass_draw) grass_draw(m);
+                            objects_->drawShadow(rc, m);
+                        }};
+    }
     SpotShadowInput spot_input;
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report, grass_caster);
@@ -357,13 +453,15 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);
+    if (object_lists.valid()) objects_->addGbufferPass(graph, rc, object_lists, scene);
     // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
     const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
     if (clouds) {
         if (!clouds_) clouds_ = std::make_unique<Clouds>();
         report.counters["clouds.layers"] =
             double(clouds_->prepare(rc, s.clouds, s.sky, sky_lighting_.get(s.sky, view.position).sky_irradiance_up));
-    } else {
+    } else if (clouds_) {
+        clouds_->releaseHistory(device_);
         clouds_.reset();
     }
     if (scene.albedo.valid()) {
@@ -411,7 +509,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     }
     if (!shadow_view && s.sky.enabled) {
         sky_->addScenePasses(graph, rc, s.sky, scene);
-        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene);
+        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene, cut);
     }
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
@@ -426,6 +524,13 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     } else {
         weather_.reset();
     }
+    if (taa) {
+        if (!taa_) taa_ = std::make_unique<TemporalAA>();
+        scene.hdr = taa_->addPass(graph, rc, scene.hdr, scene.depth, s.taa, cut);
+        report.counters["postfx.taa.history_frames"] = double(taa_->historyFrames());
+    }
+    if (clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
+    report.counters["temporal.cut"] = cut ? 1.0 : 0.0;
     if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
     if (request.light_heat && scene.light_heat.valid())
         addReadbackPass(graph, "lights.heat_readback", scene.light_heat, GL_FLOAT, *request.light_heat);
@@ -467,8 +572,10 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
     if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
     if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
+    if (objects_) report.counters["objects.memory_bytes"] = double(objects_->memoryBytes());
     if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
-    if (const std::size_t postfx = postfx_.memoryBytes(); postfx > 0) report.counters["postfx.memory_bytes"] = double(postfx);
+    if (const std::size_t postfx = postfx_.memoryBytes() + (taa_ ? taa_->memoryBytes() : 0); postfx > 0)
+        report.counters["postfx.memory_bytes"] = double(postfx);
     report.counters["sky.pre_exposure"] = pre_exposure_;
     if (s.sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
     report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
@@ -484,7 +591,9 @@ std::size_t FrameRenderer::gpuMemoryBytes() const {
            (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
            (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
            (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
-           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes();
+           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes() +
+           (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes() +
+           (objects_ ? objects_->memoryBytes() : 0);
 }
 
 }  // namespace vista

@@ -5,6 +5,7 @@
 
 #include "config/settings.h"
 #include "terrain/grass/grass.h"
+#include "renderer/meshes/objects.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_timers.h"
@@ -13,6 +14,8 @@
 #include "renderer/transient_pool.h"
 #include "renderer/lighting/local_lights.h"
 #include "postfx/chain.h"
+#include "postfx/taa.h"
+#include "renderer/blue_noise.h"
 #include "renderer/shadows/spot_shadows.h"
 #include "renderer/shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
@@ -26,6 +29,7 @@
 #include <filesystem>
 #include <utility>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +53,7 @@ struct FrameRequest {
     bool count_nonfinite = false;                  // NaN/Inf pixels of the HDR target
     bool count_lights = false;                     // lights.evaluations and lights.exact (GPU atomics)
     bool count_grass = false;                      // grass.blades (blades drawn, GPU counter)
+    bool count_objects = false;                    // objects.instances, objects.triangles (drawn, GPU counters)
     bool count_weather = false;                    // weather.drops, weather.splashes (drawn, GPU counters)
     bool forward_lights = false;                   // light lists also for transparent (forward) surfaces
     std::vector<float>* light_heat = nullptr;      // local lights evaluated per pixel, RGBA floats (R used), top row
@@ -57,6 +62,11 @@ struct FrameRequest {
                                                    // ("capture.depth_readback"; bench lights classes pixels by it)
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
+    // The frame's index in its sequence (capture: the path frame k, negative for settle frames
+    // before the path's start): TAA's jitter and the blue noise's frame index come from it, so a
+    // frame is the same whichever run renders it (docs/farm.md). Unset: frames since the last
+    // resetHistory().
+    std::optional<std::int64_t> sequence_frame;
 };
 
 struct FrameReport {
@@ -85,6 +95,7 @@ public:
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     Weather* weather() { return weather_.get(); }  // null while [weather] is off
     Water* water() { return water_.get(); }  // null while [water] is off
+    Objects* objects() { return objects_.get(); }  // null while [objects] places nothing (or no terrain)
     const PostChain& postfx() const { return postfx_; }
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
@@ -92,13 +103,14 @@ public:
     std::unique_ptr<Terrain> releaseTerrain() { return std::move(terrain_); }  // benches swap terrains
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
-
     // Forgets every temporal state, so the next frame renders as the first frame of a fresh
-    // renderer would: the post chain's history (exposure, autofocus, motion blur, lens flare) and
-    // weather's previous camera. Captures call it before the settle frames of each run of written
+    // renderer would: the post chain's history (exposure, autofocus, motion blur, lens flare),
+    // weather's previous camera, TAA's and the clouds' accumulation and the camera that cut
+    // detection compares with. Captures call it before the settle frames of each run of written
     // frames (app/capture.cpp), which is what makes a frame the same whichever shard renders it;
-    // every new kind of history (TAA, cloud reprojection) must be reset here too.
+    // every new kind of history must be reset here too (docs/temporal.md, docs/farm.md).
     void resetHistory();
+    const TemporalAA* taa() const { return taa_.get(); }  // null while [postfx.taa] is off
 
     ShaderLibrary& shaders() { return shaders_; }
     PassTimers& timers() { return timers_; }
@@ -110,7 +122,8 @@ public:
     // GPU bytes the renderer holds: the transient pool, every feature's long-lived objects and
     // the frame's own buffers. Per feature in the frame's "FEATURE.memory_bytes" counters.
     std::size_t gpuMemoryBytes() const;
-    RenderContext context(const ViewParams& view, const Settings& settings, double time_s);
+    // jitter_px: the TAA's sub-pixel shift of the projection this frame (none by default).
+    RenderContext context(const ViewParams& view, const Settings& settings, double time_s, glm::dvec2 jitter_px = {});
     // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
     double measureReferenceCopy(int width, int height);
     std::uint64_t frameIndex() const { return frame_; }
@@ -121,6 +134,8 @@ private:
     // samples (invalid: no sun shadows).
     SunShadowInput addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                              const ViewParams* fit_view, FrameReport& report, const ShadowCaster& extra);
+    // Loads and places [objects] on the terrain (drops the Objects when nothing is placed).
+    void prepareObjects(const Settings& s, InputErrors& errors);
     // This frame's local lights (false: none can light a visible point, add no light pass).
     bool prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report);
     // The shadowed spot lights among them (false: none; then spot_shadows_ is reset).
@@ -148,7 +163,15 @@ private:
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
+    std::unique_ptr<Objects> objects_;    // null while [objects] places nothing (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
+    BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
+    std::unique_ptr<TemporalAA> taa_;     // null while [postfx.taa] is off
+    ViewParams last_view_;                // the previous frame's camera, for camera-cut detection
+    double last_time_s_ = 0.0;
+    bool has_last_view_ = false;
+    std::uint64_t temporal_index_ = 0;    // frames since resetHistory(): the jitter's index without a sequence_frame
+    std::uint64_t sequence_index_ = 0;    // this frame's jitter and blue-noise index (render(), FrameRequest::sequence_frame)
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame

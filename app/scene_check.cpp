@@ -7,13 +7,15 @@
 
 namespace vista {
 
-InputErrors validateSceneInputs(const Settings& s, Heightmap* map) {
+InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
     InputErrors errors;
     if (s.terrain.enabled) {
         TerrainSettings wanted = s.terrain;
         wanted.heightmap = resolveInput(s.terrain.heightmap).string();
-        Heightmap checked = Terrain::loadChecked(wanted, errors);  // the same function Terrain::load runs
-        if (map) *map = std::move(checked);
+        wanted.dem = resolveInput(s.terrain.dem).string();
+        TerrainMapping mapping;
+        Heightmap checked = Terrain::loadChecked(wanted, errors, &mapping);  // the same function Terrain::load runs
+        if (terrain && !checked.samples.empty()) *terrain = {std::move(checked), mapping};
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare
     return errors;

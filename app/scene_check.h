@@ -4,11 +4,19 @@
 
 #include "config/input_error.h"
 #include "config/settings.h"
+#include "terrain/cdlod.h"
 #include "terrain/heightmap.h"
 
 namespace vista {
 
-// map (optional) receives the checked heightmap when the terrain is on and valid.
-InputErrors validateSceneInputs(const Settings& s, Heightmap* map = nullptr);
+// A scene's heightmap or DEM as `vista check` loads it, with its placement (a DEM's extent comes
+// from its geotransform, not from [terrain] size_m).
+struct CheckedTerrain {
+    Heightmap map;
+    TerrainMapping mapping;
+};
+
+// terrain (optional) receives the checked heightmap when the terrain is on and valid.
+InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain = nullptr);
 
 }  // namespace vista

@@ -121,6 +121,8 @@ std::string sceneHash(const Settings& settings) {
     std::uint64_t hash = fnv1a64(sceneText(settings));
     if (settings.terrain.enabled && !settings.terrain.heightmap.empty())
         if (std::optional<std::string> bytes = readAll(resolveInput(settings.terrain.heightmap))) hash = fnv1a64(*bytes, hash);
+    if (settings.terrain.enabled && !settings.terrain.dem.empty())  // a VRT's own text only, not its sources
+        if (std::optional<std::string> bytes = readAll(resolveInput(settings.terrain.dem))) hash = fnv1a64(*bytes, hash);
     return hex64(hash);
 }
 

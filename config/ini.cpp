@@ -295,6 +295,48 @@ public:
     }
 };
 
+// The scene-file reference (docs/scene-file.md): a Markdown table per section with each key's
+// default, unit, what it accepts and its help, all from describe().
+class Reference final : public Visitor<Reference> {
+public:
+    std::string out;
+    void section(const char* name, const char* help) override {
+        out += "\n## [" + std::string(name) + "]\n\n" + cell(help) + "\n\n| key | default | unit | accepts | meaning |\n|---|---|---|---|---|\n";
+    }
+    template <class T, class... L>
+    void visit(const FieldInfo& i, T& v, const L&... limits) {
+        std::string value = format(v, limits...);  // exact for files; shortest readable here
+        if constexpr (std::is_floating_point_v<T>) value = number(v);
+        if constexpr (std::is_same_v<T, glm::vec3> || std::is_same_v<T, glm::dvec3>)
+            value = number(v.x) + " " + number(v.y) + " " + number(v.z);
+        std::string hint = accepted(v, limits...);
+        if constexpr (std::is_same_v<T, bool>) hint = "true, false";
+        if constexpr (std::is_same_v<T, std::string>) value = v.empty() ? "" : '`' + v + '`';
+        row("`" + std::string(i.key) + "`", value, i.unit, hint, i.help);
+    }
+    void visitList(const FieldInfo& i, ListField& list) {
+        row("`" + std::string(i.key) + ".NAME`", list.size() ? std::to_string(list.size()) + " entries" : "none", "",
+            "one key per entry, NAME: letters, digits, _; the value: `" + list.defaultText() + "` (defaults)", i.help);
+    }
+
+private:
+    static std::string number(double x) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", x);
+        return buf;
+    }
+    // Markdown table cells: '|' would end the cell.
+    static std::string cell(std::string_view text) {
+        std::string s;
+        for (char c : text) s += c == '|' ? std::string("\\|") : std::string(1, c);
+        return s;
+    }
+    void row(const std::string& key, const std::string& value, const std::string& unit, const std::string& hint,
+             const std::string& help) {
+        out += "| " + cell(key) + " | " + cell(value) + " | " + cell(unit) + " | " + cell(hint) + " | " + cell(help) + " |\n";
+    }
+};
+
 std::vector<Section> collectNames(Settings& s) {
     NameCollector names;
     describe(names, s);
@@ -550,6 +592,20 @@ std::string saveIniString(Settings& s) {
     Writer writer;
     describe(writer, s);
     return writer.out;
+}
+
+std::string sceneFileReference() {
+    Settings defaults;
+    Reference reference;
+    describe(reference, defaults);
+    return "# Scene file reference\n\n"
+           "Generated from the settings' describe() functions by `vista check --reference > docs/scene-file.md`\n"
+           "(a unit test fails when this file is not current). Every key is optional; a missing section keeps\n"
+           "its defaults (the built-in ones below; `config/default.ini` sets some differently). An unknown key\n"
+           "(with a did-you-mean suggestion), a malformed value or one out of range is an error naming\n"
+           "`file:line`; `vista check` lists them all. `--set section.key=value` overrides any key, and `-c`\n"
+           "may repeat (later files override earlier ones). Flags accept true/false, yes/no, on/off, 1/0.\n" +
+           reference.out;
 }
 
 std::string saveIniFile(const std::filesystem::path& file, Settings& s) {

@@ -29,6 +29,9 @@ InputErrors applyOverride(std::string_view assignment, Settings& s);
 // The whole of s as an ini file, each key preceded by a comment with its help, unit and
 // range. loadIniString(saveIniString(s)) reproduces s exactly (floats round-trip).
 std::string saveIniString(Settings& s);
+// The scene-file reference as Markdown (docs/scene-file.md): every section and key with its
+// default, unit, accepted values and help, from describe().
+std::string sceneFileReference();
 // Writes saveIniString(s) to file atomically (temporary name, then rename). Empty on
 // success, otherwise the reason.
 std::string saveIniFile(const std::filesystem::path& file, Settings& s);

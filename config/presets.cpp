@@ -4,11 +4,16 @@
 // frame with every range's maximum took 40 s (23 s the 256^3 x 16-step aerial volume, 13 s a
 // 1024x576 x 256-step sky view rebuilt every frame, 3 s a 2048^2 cloud shadow map), so the
 // per-frame sky and cloud knobs stop at 2-4x their ultra value (marked "not the maximum"). The
-// levels in between were tuned from `vista quality` on the default scene (README, "Quality
+// levels in between were tuned from `vista quality` on the default scene (docs/quality.md, "Quality
 // against run time"): each preset sits on or near the front of image error against GPU time.
 #include "config/presets.h"
 
+#include "config/visitor.h"
+
 #include <algorithm>
+#include <cassert>
+#include <cstring>
+#include <string>
 
 namespace vista {
 
@@ -18,174 +23,186 @@ constexpr std::array<const char*, kQualityPresetCount> kNames{"low", "medium", "
 
 int toInt(double v) { return int(v + 0.5); }
 
+// Whether the scene uses a knob (a disabled feature's knob changes nothing).
+bool terrainOn(const Settings& s) { return s.terrain.enabled; }
+bool shadowsOn(const Settings& s) { return s.shadows.enabled; }
+bool shadowFilterOn(const Settings& s) { return s.shadows.enabled && s.shadows.filter != ShadowFilter::Hard; }
+bool spotShadowsOn(const Settings& s) { return s.shadows.enabled && s.shadows.spot_enabled; }
+bool spotFilterOn(const Settings& s) { return spotShadowsOn(s) && s.shadows.spot_filter != ShadowFilter::Hard; }
 bool skyOn(const Settings& s) { return s.sky.enabled; }
 bool aerialOn(const Settings& s) { return s.sky.enabled && s.sky.aerial_perspective; }
 bool cloudsOn(const Settings& s) { return s.sky.enabled && s.clouds.enabled; }
+bool cloudShadowsOn(const Settings& s) { return cloudsOn(s) && s.clouds.shadows; }
+bool lowCloudsOn(const Settings& s) { return cloudsOn(s) && s.clouds.low.enabled; }
+bool highCloudsOn(const Settings& s) { return cloudsOn(s) && s.clouds.high.enabled; }
+bool grassOn(const Settings& s) { return s.grass.enabled && s.terrain.enabled; }
+bool waterOn(const Settings& s) { return s.water.enabled; }
 bool ssaoOn(const Settings& s) { return s.ssao.enabled; }
 bool postOn(const Settings& s, PostEffect e, bool enabled) {
     return s.postfx.enabled && enabled && std::find(s.postfx.order.begin(), s.postfx.order.end(), e) != s.postfx.order.end();
 }
+bool bloomOn(const Settings& s) { return postOn(s, PostEffect::Bloom, s.bloom.enabled); }
+bool dofOn(const Settings& s) { return postOn(s, PostEffect::Dof, s.dof.enabled); }
+bool motionBlurOn(const Settings& s) { return postOn(s, PostEffect::MotionBlur, s.motion_blur.enabled); }
 
-// The table: name, unit, {low, medium, high, ultra, reference}, set, get, used by the scene.
+// The knobs that set several keys together; every other knob is its one key, set and read
+// through the settings visitor (keyValue below).
+void setTerrainError(Settings& s, double v, const Settings& scene) {
+    if (v <= 0.0) {
+        s.terrain.lod_metric = LodMetric::Distance;
+        s.terrain.base_range_m = float(kFullResolutionRangeM);
+        return;
+    }
+    const bool scene_full = scene.terrain.base_range_m >= float(kFullResolutionRangeM);
+    s.terrain.lod_metric = scene.terrain.lod_metric == LodMetric::Distance && scene_full ? LodMetric::Error
+                                                                                        : scene.terrain.lod_metric;
+    s.terrain.base_range_m = scene_full ? TerrainSettings{}.base_range_m : scene.terrain.base_range_m;
+    s.terrain.max_error_px = float(v);
+}
+double terrainError(const Settings& s) {
+    return s.terrain.lod_metric == LodMetric::Distance && s.terrain.base_range_m >= float(kFullResolutionRangeM)
+               ? 0.0
+               : double(s.terrain.max_error_px);
+}
+void setTransmittance(Settings& s, double v, const Settings&) {
+    s.sky.transmittance_width = toInt(v);
+    s.sky.transmittance_height = std::max(8, toInt(v) / 4);
+}
+void setSkyView(Settings& s, double v, const Settings&) {
+    s.sky.sky_view_width = toInt(v);
+    s.sky.sky_view_height = std::max(16, toInt(v) * 9 / 16);
+}
+void setSsrSteps(Settings& s, double v, const Settings&) {
+    s.water.reflection = v > 0.0 ? WaterReflection::Ssr : WaterReflection::Sky;
+    if (v > 0.0) s.water.ssr_steps = toInt(v);
+}
+double ssrSteps(const Settings& s) { return s.water.reflection == WaterReflection::Sky ? 0.0 : double(s.water.ssr_steps); }
+bool postfxOn(const Settings& s) { return s.postfx.enabled; }
+void setTaa(Settings& s, double v, const Settings&) {
+    s.taa.enabled = v != 0.0;
+    s.fxaa.enabled = v == 0.0;
+}
+double taaOn(const Settings& s) { return s.taa.enabled ? 1.0 : 0.0; }
+
+// The table: key, unit, {low, medium, high, ultra, reference}, whether the scene uses it.
 const QualityKnob kKnobs[] = {
     // Terrain: the largest vertical screen error the LOD may leave; 0 is full resolution.
-    {"terrain.max_error_px", "px", {4.0, 2.0, 1.0, 0.5, 0.0},
-     [](Settings& s, double v, const Settings& scene) {
-         if (v <= 0.0) {
-             s.terrain.lod_metric = LodMetric::Distance;
-             s.terrain.base_range_m = float(kFullResolutionRangeM);
-         } else {
-             s.terrain.lod_metric = scene.terrain.lod_metric == LodMetric::Distance &&
-                                            scene.terrain.base_range_m >= float(kFullResolutionRangeM)
-                                        ? LodMetric::Error
-                                        : scene.terrain.lod_metric;
-             s.terrain.base_range_m = scene.terrain.base_range_m >= float(kFullResolutionRangeM)
-                                          ? TerrainSettings{}.base_range_m
-                                          : scene.terrain.base_range_m;
-             s.terrain.max_error_px = float(v);
-         }
-     },
-     [](const Settings& s) {
-         return s.terrain.lod_metric == LodMetric::Distance && s.terrain.base_range_m >= float(kFullResolutionRangeM)
-                    ? 0.0
-                    : double(s.terrain.max_error_px);
-     },
-     [](const Settings& s) { return s.terrain.enabled; }, "full", false, true},
+    {"terrain.max_error_px", "px", {4.0, 2.0, 1.0, 0.5, 0.0}, terrainOn, setTerrainError, terrainError, "full", false, true},
     // Terrain material tiers (terrain.glsl MATERIAL_TIER): detail normals and triplanar rock
     // within detail_distance_m, layer means beyond far_material_m; the reference keeps every
     // texture at every distance (the largest values of both ranges).
-    {"terrain.detail_distance_m", "m", {100, 150, 250, 400, 100000},
-     [](Settings& s, double v, const Settings&) { s.terrain.detail_distance_m = float(v); },
-     [](const Settings& s) { return double(s.terrain.detail_distance_m); }, [](const Settings& s) { return s.terrain.enabled; }},
-    {"terrain.far_material_m", "m", {1500, 2000, 3000, 6000, 1.0e7},
-     [](Settings& s, double v, const Settings&) { s.terrain.far_material_m = float(v); },
-     [](const Settings& s) { return double(s.terrain.far_material_m); }, [](const Settings& s) { return s.terrain.enabled; }},
+    {"terrain.detail_distance_m", "m", {100, 150, 250, 400, 100000}, terrainOn},
+    {"terrain.far_material_m", "m", {1500, 2000, 3000, 6000, 1.0e7}, terrainOn},
     // Sun shadows (bench shadows: error halves from 1024 to 4096 texels at 2-3x the cost).
-    {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096},
-     [](Settings& s, double v, const Settings&) { s.shadows.resolution = toInt(v); },
-     [](const Settings& s) { return double(s.shadows.resolution); }, [](const Settings& s) { return s.shadows.enabled; }},
-    {"shadows.pcf_taps", "taps", {4, 8, 12, 16, 64},
-     [](Settings& s, double v, const Settings&) { s.shadows.pcf_taps = toInt(v); },
-     [](const Settings& s) { return double(s.shadows.pcf_taps); },
-     [](const Settings& s) { return s.shadows.enabled && s.shadows.filter != ShadowFilter::Hard; }},
+    {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096}, shadowsOn},
+    {"shadows.pcf_taps", "taps", {4, 8, 12, 16, 64}, shadowFilterOn},
     // Spot shadows (bench shadows: the hard error falls 7x from a 1024 to a 4096 atlas at 2.6x the cost).
-    {"shadows.spot_atlas_resolution", "texels", {1024, 1024, 2048, 4096, 8192},
-     [](Settings& s, double v, const Settings&) { s.shadows.spot_atlas_resolution = toInt(v); },
-     [](const Settings& s) { return double(s.shadows.spot_atlas_resolution); },
-     [](const Settings& s) { return s.shadows.enabled && s.shadows.spot_enabled; }},
-    {"shadows.spot_taps", "taps", {4, 8, 16, 16, 64},
-     [](Settings& s, double v, const Settings&) { s.shadows.spot_taps = toInt(v); },
-     [](const Settings& s) { return double(s.shadows.spot_taps); },
-     [](const Settings& s) { return s.shadows.enabled && s.shadows.spot_enabled && s.shadows.spot_filter != ShadowFilter::Hard; }},
+    {"shadows.spot_atlas_resolution", "texels", {1024, 1024, 2048, 4096, 8192}, spotShadowsOn},
+    {"shadows.spot_taps", "taps", {4, 8, 16, 16, 64}, spotFilterOn},
     // Atmosphere LUTs (bench sky's rows). Reference: the transmittance and multiple-scattering
     // LUTs (built once per settings change) at their maxima but a 1024x256 transmittance; the
     // per-frame sky view (512x288, 128 steps) and aerial volume (128^2 x 128, 8 steps) not the maximum.
-    {"sky.transmittance_width", "texels", {64, 128, 256, 512, 1024},
-     [](Settings& s, double v, const Settings&) {
-         s.sky.transmittance_width = toInt(v);
-         s.sky.transmittance_height = std::max(8, toInt(v) / 4);
-     },
-     [](const Settings& s) { return double(s.sky.transmittance_width); }, skyOn},
-    {"sky.transmittance_steps", "steps", {12, 24, 40, 80, 512},
-     [](Settings& s, double v, const Settings&) { s.sky.transmittance_steps = toInt(v); },
-     [](const Settings& s) { return double(s.sky.transmittance_steps); }, skyOn},
-    {"sky.multiscatter_size", "texels", {16, 24, 32, 64, 128},
-     [](Settings& s, double v, const Settings&) { s.sky.multiscatter_size = toInt(v); },
-     [](const Settings& s) { return double(s.sky.multiscatter_size); }, skyOn},
-    {"sky.multiscatter_steps", "steps", {8, 12, 20, 40, 256},
-     [](Settings& s, double v, const Settings&) { s.sky.multiscatter_steps = toInt(v); },
-     [](const Settings& s) { return double(s.sky.multiscatter_steps); }, skyOn},
-    {"sky.sky_view_width", "texels", {64, 128, 192, 384, 512},
-     [](Settings& s, double v, const Settings&) {
-         s.sky.sky_view_width = toInt(v);
-         s.sky.sky_view_height = std::max(16, toInt(v) * 9 / 16);
-     },
-     [](const Settings& s) { return double(s.sky.sky_view_width); }, skyOn},
-    {"sky.sky_view_steps", "steps", {12, 20, 32, 64, 128},
-     [](Settings& s, double v, const Settings&) { s.sky.sky_view_steps = toInt(v); },
-     [](const Settings& s) { return double(s.sky.sky_view_steps); }, skyOn},
-    {"sky.aerial_size", "froxels", {16, 24, 32, 64, 128},
-     [](Settings& s, double v, const Settings&) { s.sky.aerial_size = toInt(v); },
-     [](const Settings& s) { return double(s.sky.aerial_size); }, aerialOn},
-    {"sky.aerial_slices", "slices", {16, 24, 32, 64, 128},
-     [](Settings& s, double v, const Settings&) { s.sky.aerial_slices = toInt(v); },
-     [](const Settings& s) { return double(s.sky.aerial_slices); }, aerialOn},
-    {"sky.aerial_steps", "steps", {1, 1, 2, 4, 8},
-     [](Settings& s, double v, const Settings&) { s.sky.aerial_steps = toInt(v); },
-     [](const Settings& s) { return double(s.sky.aerial_steps); }, aerialOn},
+    // The transmittance width also sets the height (width / 4), the sky view's width its height (9/16).
+    {"sky.transmittance_width", "texels", {64, 128, 256, 512, 1024}, skyOn, setTransmittance},
+    {"sky.transmittance_steps", "steps", {12, 24, 40, 80, 512}, skyOn},
+    {"sky.multiscatter_size", "texels", {16, 24, 32, 64, 128}, skyOn},
+    {"sky.multiscatter_steps", "steps", {8, 12, 20, 40, 256}, skyOn},
+    {"sky.sky_view_width", "texels", {64, 128, 192, 384, 512}, skyOn, setSkyView},
+    {"sky.sky_view_steps", "steps", {12, 20, 32, 64, 128}, skyOn},
+    {"sky.aerial_size", "froxels", {16, 24, 32, 64, 128}, aerialOn},
+    {"sky.aerial_slices", "slices", {16, 24, 32, 64, 128}, aerialOn},
+    {"sky.aerial_steps", "steps", {1, 1, 2, 4, 8}, aerialOn},
     // Clouds: ray marching, self-shadowing, their shadow map and the noise detail per layer.
     // Reference: 8 octaves and full resolution; light samples, steps and the shadow map not the maximum.
-    {"clouds.half_resolution", "", {1, 1, 1, 1, 0},
-     [](Settings& s, double v, const Settings&) { s.clouds.half_resolution = v != 0.0; },
-     [](const Settings& s) { return s.clouds.half_resolution ? 1.0 : 0.0; }, cloudsOn, nullptr, true, true},
-    {"clouds.light_samples", "samples", {1, 2, 3, 6, 8},
-     [](Settings& s, double v, const Settings&) { s.clouds.light_samples = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.light_samples); }, cloudsOn},
-    {"clouds.shadow_size", "texels", {128, 256, 256, 512, 1024},
-     [](Settings& s, double v, const Settings&) { s.clouds.shadow_size = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.shadow_size); },
-     [](const Settings& s) { return cloudsOn(s) && s.clouds.shadows; }},
-    {"clouds.low.octaves", "", {4, 4, 4, 5, 8},
-     [](Settings& s, double v, const Settings&) { s.clouds.low.octaves = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.low.octaves); },
-     [](const Settings& s) { return cloudsOn(s) && s.clouds.low.enabled; }},
-    {"clouds.low.steps", "steps", {4, 6, 8, 16, 32},
-     [](Settings& s, double v, const Settings&) { s.clouds.low.steps = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.low.steps); },
-     [](const Settings& s) { return cloudsOn(s) && s.clouds.low.enabled; }},
-    {"clouds.high.octaves", "", {2, 3, 3, 4, 8},
-     [](Settings& s, double v, const Settings&) { s.clouds.high.octaves = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.high.octaves); },
-     [](const Settings& s) { return cloudsOn(s) && s.clouds.high.enabled; }},
-    {"clouds.high.steps", "steps", {1, 2, 2, 4, 16},
-     [](Settings& s, double v, const Settings&) { s.clouds.high.steps = toInt(v); },
-     [](const Settings& s) { return double(s.clouds.high.steps); },
-     [](const Settings& s) { return cloudsOn(s) && s.clouds.high.enabled; }},
+    {"clouds.half_resolution", "", {1, 1, 1, 1, 0}, cloudsOn, nullptr, nullptr, nullptr, true, true},
+    {"clouds.light_samples", "samples", {1, 2, 3, 6, 8}, cloudsOn},
+    {"clouds.shadow_size", "texels", {128, 256, 256, 512, 1024}, cloudShadowsOn},
+    {"clouds.low.octaves", "", {4, 4, 4, 5, 8}, lowCloudsOn},
+    {"clouds.low.steps", "steps", {4, 6, 8, 16, 32}, lowCloudsOn},
+    {"clouds.high.octaves", "", {2, 3, 3, 4, 8}, highCloudsOn},
+    {"clouds.high.steps", "steps", {1, 2, 2, 4, 16}, highCloudsOn},
     // Grass: segments per near blade (density and radius change what is drawn, not how well).
-    {"grass.segments", "", {2, 3, 4, 6, 8},
-     [](Settings& s, double v, const Settings&) { s.grass.segments = toInt(v); },
-     [](const Settings& s) { return double(s.grass.segments); },
-     [](const Settings& s) { return s.grass.enabled && s.terrain.enabled; }},
+    {"grass.segments", "", {2, 3, 4, 6, 8}, grassOn},
     // The sea: ring grid segments (cells about 2 pi / segments of their distance), screen-space
     // reflection steps (0: the sky alone, [water] reflection = sky) and waves.
-    {"water.grid_segments", "", {64, 96, 128, 192, 256},
-     [](Settings& s, double v, const Settings&) { s.water.grid_segments = toInt(v); },
-     [](const Settings& s) { return double(s.water.grid_segments); }, [](const Settings& s) { return s.water.enabled; }},
-    {"water.ssr_steps", "steps", {0, 16, 24, 48, 128},
-     [](Settings& s, double v, const Settings&) {
-         s.water.reflection = v > 0.0 ? WaterReflection::Ssr : WaterReflection::Sky;
-         if (v > 0.0) s.water.ssr_steps = toInt(v);
-     },
-     [](const Settings& s) { return s.water.reflection == WaterReflection::Sky ? 0.0 : double(s.water.ssr_steps); },
-     [](const Settings& s) { return s.water.enabled; }, "sky"},
-    {"water.waves", "", {16, 20, 24, 32, 32},
-     [](Settings& s, double v, const Settings&) { s.water.waves = toInt(v); },
-     [](const Settings& s) { return double(s.water.waves); }, [](const Settings& s) { return s.water.enabled; }},
-    // Post chain.
-    {"ssao.directions", "", {2, 3, 4, 8, 16},
-     [](Settings& s, double v, const Settings&) { s.ssao.directions = toInt(v); },
-     [](const Settings& s) { return double(s.ssao.directions); }, ssaoOn},
-    {"ssao.steps", "steps", {3, 4, 4, 8, 32},
-     [](Settings& s, double v, const Settings&) { s.ssao.steps = toInt(v); },
-     [](const Settings& s) { return double(s.ssao.steps); }, ssaoOn},
-    {"ssao.half_resolution", "", {1, 1, 1, 0, 0},
-     [](Settings& s, double v, const Settings&) { s.ssao.half_resolution = v != 0.0; },
-     [](const Settings& s) { return s.ssao.half_resolution ? 1.0 : 0.0; }, ssaoOn, nullptr, true, true},
-    {"bloom.levels", "levels", {3, 4, 5, 6, 10},
-     [](Settings& s, double v, const Settings&) { s.bloom.levels = toInt(v); },
-     [](const Settings& s) { return double(s.bloom.levels); },
-     [](const Settings& s) { return postOn(s, PostEffect::Bloom, s.bloom.enabled); }},
-    {"dof.samples", "taps", {12, 20, 32, 64, 256},
-     [](Settings& s, double v, const Settings&) { s.dof.samples = toInt(v); },
-     [](const Settings& s) { return double(s.dof.samples); },
-     [](const Settings& s) { return postOn(s, PostEffect::Dof, s.dof.enabled); }},
-    {"motion_blur.samples", "taps", {6, 8, 12, 24, 64},
-     [](Settings& s, double v, const Settings&) { s.motion_blur.samples = toInt(v); },
-     [](const Settings& s) { return double(s.motion_blur.samples); },
-     [](const Settings& s) { return postOn(s, PostEffect::MotionBlur, s.motion_blur.enabled); }},
+    {"water.grid_segments", "", {64, 96, 128, 192, 256}, waterOn},
+    {"water.ssr_steps", "steps", {0, 16, 24, 48, 128}, waterOn, setSsrSteps, ssrSteps, "sky"},
+    {"water.waves", "", {16, 20, 24, 32, 32}, waterOn},
+    // Post chain (keys of [postfx.NAME]). Anti-aliasing: TAA (postfx/taa.h) from medium up; the
+    // low preset keeps FXAA, one full-screen pass without history.
+    {"postfx.taa", "", {0, 1, 1, 1, 1}, postfxOn, setTaa, taaOn, nullptr, true},
+    {"ssao.directions", "", {2, 3, 4, 8, 16}, ssaoOn},
+    {"ssao.steps", "steps", {3, 4, 4, 8, 32}, ssaoOn},
+    {"ssao.half_resolution", "", {1, 1, 1, 0, 0}, ssaoOn, nullptr, nullptr, nullptr, true, true},
+    {"bloom.levels", "levels", {3, 4, 5, 6, 10}, bloomOn},
+    {"dof.samples", "taps", {12, 20, 32, 64, 256}, dofOn},
+    {"motion_blur.samples", "taps", {6, 8, 12, 24, 64}, motionBlurOn},
 };
 
+// Sets (set = true) or reads the field whose key is name: "section.key", or "NAME.key" for
+// [postfx.NAME]. A number field takes value as it is (an int rounded), a flag value != 0.
+class KeyValue final : public SettingsVisitor {
+public:
+    KeyValue(std::string_view name, bool set, double value) : name_(name), set_(set), value_(value) {}
+    bool found = false;
+    double value() const { return value_; }
+
+    void section(const char* name, const char*) override {
+        section_ = name;
+        if (section_.rfind("postfx.", 0) == 0) section_.erase(0, 7);
+    }
+    void field(const FieldInfo& info, bool& v) override {
+        if (match(info)) set_ ? void(v = value_ != 0.0) : void(value_ = v ? 1.0 : 0.0);
+    }
+    void field(const FieldInfo& info, int& v, int, int) override {
+        if (match(info)) set_ ? void(v = toInt(value_)) : void(value_ = double(v));
+    }
+    void field(const FieldInfo& info, float& v, float, float) override {
+        if (match(info)) set_ ? void(v = float(value_)) : void(value_ = double(v));
+    }
+    void field(const FieldInfo& info, double& v, double, double) override {
+        if (match(info)) set_ ? void(v = value_) : void(value_ = v);
+    }
+    void field(const FieldInfo&, glm::vec3&, float, float) override {}
+    void field(const FieldInfo&, glm::dvec3&, double, double) override {}
+    void field(const FieldInfo&, std::string&) override {}
+    void choice(const FieldInfo&, int&, std::span<const char* const>) override {}
+    void list(const FieldInfo&, ListField&) override {}
+
+private:
+    bool match(const FieldInfo& info) {
+        const bool hit = name_.size() == section_.size() + 1 + std::strlen(info.key) && name_.rfind(section_, 0) == 0 &&
+                         name_[section_.size()] == '.' && name_.substr(section_.size() + 1) == info.key;
+        found = found || hit;
+        return hit;
+    }
+    std::string_view name_;
+    bool set_;
+    double value_;
+    std::string section_;
+};
+
+double keyValue(const char* name, Settings& s, bool set, double value) {
+    KeyValue v(name, set, value);
+    describe(v, s);
+    assert(v.found && "a quality knob names no numeric or flag setting");
+    return v.value();
+}
+
 }  // namespace
+
+void QualityKnob::apply(Settings& s, double value, const Settings& scene) const {
+    if (set)
+        set(s, value, scene);
+    else
+        keyValue(name, s, true, value);
+}
+
+double QualityKnob::get(const Settings& s) const {
+    if (read) return read(s);
+    Settings copy = s;  // describe() takes a mutable struct; reading changes nothing
+    return keyValue(name, copy, false, 0.0);
+}
 
 std::span<const QualityKnob> qualityKnobs() { return kKnobs; }
 

@@ -16,22 +16,28 @@ namespace vista {
 enum class QualityPreset : int { Low, Medium, High, Ultra, Reference };
 inline constexpr int kQualityPresetCount = 5;
 
-// One quality knob: its name (the ini key it sets, or the pair it sets together), its value at
-// each preset (low, medium, high = the defaults, ultra, reference = the maximum), how to set it
-// and whether the scene uses it (a disabled feature's knob changes nothing).
+// One quality knob: the setting it turns (its key, "NAME.key" for [postfx.NAME]), its value at
+// each preset (low, medium, high = the defaults, ultra, reference = the maximum) and whether the
+// scene uses it (a disabled feature's knob changes nothing). A knob is set and read through the
+// settings visitor by its key, so its range and help stay in describe(); a knob that sets
+// several keys together has its own set/read.
 struct QualityKnob {
     const char* name;  // "shadows.resolution"; "sky.transmittance_width" also sets the height (width / 4)
     const char* unit;  // for the report: "texels", "px", "taps", "" ...
     std::array<double, kQualityPresetCount> levels;
-    // Sets the knob to value in s. scene: the settings before any preset (what a knob that maps
-    // onto several keys restores: the terrain's LOD metric and base range).
-    void (*apply)(Settings& s, double value, const Settings& scene);
-    double (*get)(const Settings& s);
-    bool (*active)(const Settings& scene);
+    bool (*used)(const Settings& scene);
+    // For knobs over several keys. scene: the settings before any preset (what the terrain's
+    // knob restores: its LOD metric and base range).
+    void (*set)(Settings& s, double value, const Settings& scene) = nullptr;
+    double (*read)(const Settings& s) = nullptr;
     // Value as the report prints it ("full" for the terrain's 0, "on"/"off" for flags).
     const char* special_zero = nullptr;  // label of value 0, if it has one
     bool flag = false;                   // 0/1 knob
     bool descending = false;             // finer at lower values (error thresholds, half-resolution flags)
+
+    void apply(Settings& s, double value, const Settings& scene) const;
+    double get(const Settings& s) const;
+    bool active(const Settings& scene) const { return used(scene); }
 };
 
 // Every knob, in report order.

@@ -74,6 +74,15 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"heightmap", "", "PNG (8/16-bit), TIFF, EXR, or raw .r16 with raw_width/raw_height"}, s.heightmap);
     v.field({"raw_width", "samples", "width of a .r16 heightmap"}, s.raw_width, 0, 65536);
     v.field({"raw_height", "samples", "height of a .r16 heightmap"}, s.raw_height, 0, 65536);
+    static constexpr std::array<const char*, 2> nodata{"fill", "refuse"};
+    v.field({"dem", "", "elevation model read by GDAL (GeoTIFF, SRTM .hgt, ESRI ASCII grid, VRT mosaic, ...): replaces "
+                        "heightmap; size_m, height_scale_m and height_offset_m then come from its geotransform and heights "
+                        "(docs/dem.md)"},
+            s.dem);
+    v.choice({"dem_nodata", "", "a DEM's nodata cells: fill = from their neighbours, refuse = an error naming the first"},
+             s.dem_nodata, nodata);
+    v.field({"dem_vertical_scale", "x", "multiplies a DEM's heights (vertical exaggeration)"}, s.dem_vertical_scale, 0.01f,
+            100.0f);
     v.field({"origin", "m", "world position of the map centre; y is added to heights"}, s.origin, -1e8, 1e8);
     v.field({"size_m", "m", "extent of the map in x and z"}, s.size_m, 1.0f, 1.0e7f);
     v.field({"height_scale_m", "m", "height of heightmap value 1"}, s.height_scale_m, 0.0f, 1.0e5f);
@@ -223,6 +232,8 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
     v.field({"half_resolution", "", "march at half size, upsampled over the image (clouds.composite)"}, s.half_resolution);
     v.field({"coverage_variation", "", "every layer's coverage swings by +- this over coverage_period_s"}, s.coverage_variation, 0.0f, 1.0f);
     v.field({"coverage_period_s", "s", "period of the coverage swing"}, s.coverage_period_s, 1.0f, 1.0e7f);
+    v.field({"temporal", "", "accumulate the march over frames, reprojected along the clouds' depth (clouds.temporal)"}, s.temporal);
+    v.field({"temporal_blend", "", "share of this frame's march once the history is full (1: no history)"}, s.temporal_blend, 0.01f, 1.0f);
     v.field({"shadows", "", "cloud shadows on the terrain (clouds.shadow)"}, s.shadows);
     v.field({"shadow_size", "texels", "shadow map texels per side"}, s.shadow_size, 16, 2048);
     v.field({"shadow_extent_km", "km", "ground covered by the shadow map around the camera"}, s.shadow_extent_km, 0.1f, 1000.0f);
@@ -277,6 +288,17 @@ void describe(SettingsVisitor& v, FxaaSettings& s) {
     v.field({"edge_threshold", "", "smallest local luma contrast treated as an edge"}, s.edge_threshold, 0.01f, 1.0f);
     v.field({"edge_threshold_min", "", "luma contrast below this is never an edge (dark areas)"}, s.edge_threshold_min, 0.0f, 1.0f);
     v.field({"subpixel", "", "sub-pixel aliasing removal, 0 off, 1 softest"}, s.subpixel, 0.0f, 1.0f);
+}
+
+void describe(SettingsVisitor& v, TaaSettings& s) {
+    v.section("postfx.taa", "temporal anti-aliasing on the HDR image before the post chain (Karis 2014)");
+    v.field({"enabled", "", "jitter the projection and resolve against the reprojected history"}, s.enabled);
+    v.field({"blend", "", "share of the current frame in the result (1: history off)"}, s.blend, 0.02f, 1.0f);
+    v.field({"clip_gamma", "", "history clipped to the neighbourhood mean +- this many standard deviations (YCoCg)"}, s.clip_gamma, 0.5f, 4.0f);
+    v.field({"sharpen", "", "unsharp mask of the history against its bilinear fetch"}, s.sharpen, 0.0f, 1.0f);
+    v.field({"disocclusion", "", "relative depth difference that rejects the history"}, s.disocclusion, 0.001f, 1.0f);
+    v.field({"cut_distance_m", "m", "a camera jump beyond this between frames is a cut: TAA and cloud history dropped"}, s.cut_distance_m, 0.0f, 1.0e9f);
+    v.field({"cut_angle_deg", "deg", "a camera turn beyond this between frames is a cut"}, s.cut_angle_deg, 0.0f, 180.0f);
 }
 
 void describe(SettingsVisitor& v, GradeSettings& s) {
@@ -478,11 +500,13 @@ void describe(SettingsVisitor& v, Settings& s) {
     describe(v, s.weather);
     describe(v, s.lights);  // renderer/lighting/light_settings.cpp
     describe(v, s.water);
+    describe(v, s.objects);  // terrain/scatter/object_settings.cpp
     describe(v, s.postfx);
     describe(v, s.exposure);
     describe(v, s.tonemap);
     describe(v, s.bloom);
     describe(v, s.fxaa);
+    describe(v, s.taa);
     describe(v, s.grade);
     describe(v, s.ssao);
     describe(v, s.dof);

@@ -5,6 +5,7 @@
 
 #include "config/visitor.h"
 #include "renderer/lighting/light_settings.h"  // LightsSettings: part of vista_config, no renderer code
+#include "terrain/scatter/object_settings.h"  // ObjectsSettings: likewise
 
 #include <glm/vec3.hpp>
 
@@ -63,12 +64,16 @@ struct DebugSettings {
 
 enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
 enum class LodMetric : int { Error, Distance };
+enum class DemNodata : int { Fill, Refuse };  // what a DEM's nodata cells get (terrain/dem.h)
 
 struct TerrainSettings {
     bool enabled = true;
     std::string heightmap = "data/heightmaps/island.png";  //!< PNG/TIFF/EXR, or .r16 with raw_width/raw_height
     int raw_width = 0;                //!< samples, .r16 only
     int raw_height = 0;               //!< samples, .r16 only
+    std::string dem;                  //!< elevation model read by GDAL (GeoTIFF, .hgt, ASCII grid, VRT, ...); replaces heightmap, and size and heights come from its data
+    DemNodata dem_nodata = DemNodata::Fill;  //!< nodata cells of a DEM: filled from their neighbours, or refused
+    float dem_vertical_scale = 1.0f;  //!< x, multiplies a DEM's heights (exaggeration), 0.01..100
     glm::dvec3 origin{0.0};           //!< m, world position of the map centre (y: added to heights)
     float size_m = 8192.0f;           //!< m, extent of the map in x and z
     float height_scale_m = 600.0f;    //!< m, height of heightmap value 1
@@ -226,6 +231,8 @@ struct CloudsSettings {
     bool half_resolution = true;     //!< march at half size ("clouds.half"), upsampled by "clouds.composite"
     float coverage_variation = 0.1f; //!< coverage of every layer swings by +-this over coverage_period_s, 0..1
     float coverage_period_s = 1800.0f; //!< s, period of the coverage swing, 1..1e7
+    bool temporal = true;            //!< accumulate the march over frames ("clouds.temporal", docs/temporal.md)
+    float temporal_blend = 0.0625f;  //!< share of this frame's march once history is full, 0.01..1 (1: no history)
     bool shadows = true;             //!< cloud shadows on the terrain ("clouds.shadow"): sun light through the layers
     int shadow_size = 256;           //!< texels per side of the shadow map, 16..2048
     float shadow_extent_km = 16.0f;  //!< km covered by the shadow map around the camera, 0.1..1000
@@ -315,10 +322,24 @@ struct BloomSettings {
 
 //! FXAA 3.11-style anti-aliasing on the display image (luma edges).
 struct FxaaSettings {
-    bool enabled = true;
+    bool enabled = false;  //!< off by default: TAA ([postfx.taa]) anti-aliases; the low preset uses FXAA instead
     float edge_threshold = 0.125f;     //!< smallest local contrast treated as an edge, 0.01..1
     float edge_threshold_min = 0.0312f;//!< contrast below this (dark areas) is never an edge, 0..1
     float subpixel = 0.75f;            //!< sub-pixel aliasing removal (0 off, 1 soft), 0..1
+};
+
+//! Temporal anti-aliasing (postfx/taa.h, docs/temporal.md): a Halton sub-pixel jitter of the
+//! projection and a resolve of the linear HDR image against its reprojected history, run on the
+//! scene's HDR image before the post chain (so before tone mapping and in HDR captures).
+//! cut_distance_m / cut_angle_deg also decide when the clouds' history is dropped.
+struct TaaSettings {
+    bool enabled = true;
+    float blend = 0.1f;            //!< share of the current frame in the result, 0.02..1 (1: history off)
+    float clip_gamma = 1.25f;      //!< neighbourhood box half-size in standard deviations, 0.5..4
+    float sharpen = 0.25f;         //!< unsharp mask of the history against its bilinear fetch, 0..1
+    float disocclusion = 0.05f;    //!< relative depth difference that rejects history, 0.001..1
+    float cut_distance_m = 100.0f; //!< m, a camera jump beyond this between frames is a cut (history dropped)
+    float cut_angle_deg = 30.0f;   //!< deg, a camera turn beyond this between frames is a cut
 };
 
 //! Colour grading on the display image: lift/gamma/gain per channel, saturation, vignette.
@@ -504,11 +525,13 @@ struct Settings {
     WeatherSettings weather;    // [weather]
     LightsSettings lights;      // [lights], with the light.NAME / volume.NAME lists
     WaterSettings water;        // [water]
+    ObjectsSettings objects;    // [objects], with the object.NAME / scatter.NAME lists
     PostfxSettings postfx;
     ExposureSettings exposure;  // [postfx.exposure]
     TonemapSettings tonemap;    // [postfx.tonemap]
     BloomSettings bloom;        // [postfx.bloom]
     FxaaSettings fxaa;          // [postfx.fxaa]
+    TaaSettings taa;            // [postfx.taa]
     GradeSettings grade;        // [postfx.grade]
     SsaoSettings ssao;          // [postfx.ssao]
     DofSettings dof;            // [postfx.dof]

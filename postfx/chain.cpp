@@ -7,8 +7,6 @@
 #include "postfx/grade.h"
 #include "postfx/lut.h"
 #include "postfx/scotopic.h"
-#include "sky/atmosphere.h"
-#include "sky/night_light.h"
 #include "postfx/ssao.h"
 #include "postfx/tonemap.h"
 
@@ -54,9 +52,9 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 flush();
                 if (s.exposure.mode == ExposureMode::Auto) {
                     if (!auto_exposure_) auto_exposure_ = std::make_unique<AutoExposure>();
-                    // cd/m^2 per HDR unit without the pre-exposure (s.sky carries it: sky/night_light.h).
+                    // cd/m^2 per HDR unit of the light itself (the image holds it times the pre-exposure).
                     exposure = auto_exposure_->addPasses(graph, rc, image, s.exposure, dt, reset,
-                                                         luxPerHdrUnit(s.sky.sun_illuminance) * rc.pre_exposure);
+                                                         rc.cd_per_value * rc.pre_exposure);
                     uses_auto = true;
                 } else {
                     exposure = manualExposure(s.exposure);
@@ -93,15 +91,15 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 if (!s.lens_flare.enabled || !depth.valid()) break;
                 flush();
                 if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
-                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, sunDirection(s.sky),
-                                               s.sky.sun_illuminance, dt, reset);
+                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, rc.sun_direction,
+                                               rc.sun_illuminance, dt, reset);
                 uses_flare = true;
                 break;
             case PostEffect::Scotopic:
                 // Only on frames whose sky is dim enough to be pre-exposed (below 400 lx).
                 if (!s.scotopic.enabled || display || !(rc.pre_exposure > 1.0)) break;
                 flush();
-                image = addScotopicPass(graph, rc, image, s.scotopic, luxPerHdrUnit(s.sky.sun_illuminance));
+                image = addScotopicPass(graph, rc, image, s.scotopic, rc.cd_per_value);
                 break;
             case PostEffect::NightVision:
                 if (!s.night_vision.enabled) break;

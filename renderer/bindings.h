@@ -29,6 +29,12 @@ constexpr int kSpotShadowMap = 10;      // texture unit: spot shadow atlas, dept
 constexpr int kSpotShadowDepth = 11;    // texture unit: the same atlas, raw depth (PCSS blocker search, debug view)
 constexpr int kGrassBlades = 8;    // shader storage: culled grass blades (terrain/grass/shaders/grass_common.glsl)
 constexpr int kGrassDraws = 9;     // shader storage: grass indirect draw commands (near, far)
+constexpr int kBlueNoise = 15;     // texture unit: the blue-noise map (renderer/blue_noise.h), bound every frame
 constexpr int kWeatherCells = 8;   // shader storage: the rain's visible drop cells (sky/weather/shaders/weather_rain.glsl)
+constexpr int kObjectInstances = 11;  // shader storage: placed objects (renderer/meshes/shaders/object_common.glsl)
+constexpr int kObjectVisible = 12;    // shader storage: culled instance indices per (model, LOD) region
+constexpr int kObjectCounts = 13;     // shader storage: instances kept per (model, LOD) group
+constexpr int kObjectDraws = 14;      // shader storage: the indirect draw commands (instance counts set on the GPU)
+constexpr int kObjectModels = 15;     // shader storage: per model bounding sphere, regions and triangles per LOD
 
 }  // namespace vista::binding

@@ -96,12 +96,13 @@ struct Selector {
 
     Box box(int level, int x, int z) const {
         std::int64_t n = texels(level);
-        double tx = mapping.texelSizeX(), tz = mapping.texelSizeZ(), half = mapping.size_m * 0.5;
+        double tx = mapping.texelSizeX(), tz = mapping.texelSizeZ();
+        double half_x = mapping.sizeX() * 0.5, half_z = mapping.sizeZ() * 0.5;
         glm::vec2 mm = tree.minMax(level, x, z);
         Box b;
-        b.lo = glm::dvec3(double(x * n) * tx - half, mm.x, double(z * n) * tz - half) - camera;
-        b.hi = glm::dvec3(double(std::min<std::int64_t>((x + 1) * n, mapping.width - 1)) * tx - half, mm.y,
-                          double(std::min<std::int64_t>((z + 1) * n, mapping.height - 1)) * tz - half) - camera;
+        b.lo = glm::dvec3(double(x * n) * tx - half_x, mm.x, double(z * n) * tz - half_z) - camera;
+        b.hi = glm::dvec3(double(std::min<std::int64_t>((x + 1) * n, mapping.width - 1)) * tx - half_x, mm.y,
+                          double(std::min<std::int64_t>((z + 1) * n, mapping.height - 1)) * tz - half_z) - camera;
         return b;
     }
 
@@ -273,7 +274,7 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
 
     // The top level has no coarser level to hand over to, so its range reaches the farthest
     // corner of the map: the whole map is always drawn, however few levels the tree has.
-    double half = mapping.size_m * 0.5, low = tree.minMax(levels - 1, 0, 0).x, high = low;
+    double low = tree.minMax(levels - 1, 0, 0).x, high = low;
     glm::ivec2 top_count = tree.nodesPerSide(levels - 1);
     for (int z = 0; z < top_count.y; ++z)
         for (int x = 0; x < top_count.x; ++x) {
@@ -281,8 +282,8 @@ void selectNodes(const MinMaxQuadtree& tree, const TerrainMapping& mapping, cons
             low = std::min(low, double(mm.x));
             high = std::max(high, double(mm.y));
         }
-    glm::dvec3 far(std::abs(camera.x) + half, std::max(std::abs(camera.y - low), std::abs(camera.y - high)),
-                   std::abs(camera.z) + half);
+    glm::dvec3 far(std::abs(camera.x) + mapping.sizeX() * 0.5, std::max(std::abs(camera.y - low), std::abs(camera.y - high)),
+                   std::abs(camera.z) + mapping.sizeZ() * 0.5);
     for (int level = 0; level < levels; ++level) {
         double& end = out.ranges[std::size_t(level)];
         double start = out.morph_starts[std::size_t(level)];
@@ -314,7 +315,7 @@ glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const Ter
     glm::dvec2 step = node.size_m * double(1 << (node.level - node.node_level)) / double(grid);
     glm::dvec2 g(gx, gz);
     glm::dvec2 rel = node.origin_rel + g * step;
-    glm::dvec2 map_min = glm::dvec2(-mapping.size_m * 0.5) - glm::dvec2(camera.x, camera.z);
+    glm::dvec2 map_min = -0.5 * glm::dvec2(mapping.sizeX(), mapping.sizeZ()) - glm::dvec2(camera.x, camera.z);
     // Distance from the unmorphed vertex with its sampled height, as the shader has it.
     double h = mapping.height_offset_m - camera.y +
                mapping.height_scale_m * bilinear(map, (rel.x - map_min.x) / mapping.texelSizeX(),
@@ -326,7 +327,7 @@ glm::dvec2 morphVertex(const SelectedNode& node, const Selection& sel, const Ter
     if (morph_k) *morph_k = k;
     // Odd vertices slide onto their even neighbour below. A vertex at or past the map's far
     // edge keeps its place on that axis, so the border never pulls inward.
-    glm::dvec2 map_max = map_min + mapping.size_m;
+    glm::dvec2 map_max = map_min + glm::dvec2(mapping.sizeX(), mapping.sizeZ());
     glm::dvec2 inside(rel.x < map_max.x ? 1.0 : 0.0, rel.y < map_max.y ? 1.0 : 0.0);
     g -= glm::fract(g * 0.5) * 2.0 * k * inside;
     rel = glm::clamp(node.origin_rel + g * step, map_min, map_max);

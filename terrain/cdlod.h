@@ -23,14 +23,19 @@
 namespace vista {
 
 struct TerrainMapping {
-    double size_m = 4096.0;      // world extent in x and z
+    double size_m = 4096.0;      // world extent in x (and z, unless size_z_m is set)
     double height_scale_m = 600; // height of sample value 1
     double height_offset_m = 0;  // height of sample value 0
     int width = 0, height = 0;   // heightmap samples
+    // World extent in z when it differs from x (a DEM whose texels or raster are not square
+    // in metres, terrain/dem.h); 0: size_m.
+    double size_z_m = 0.0;
 
+    double sizeX() const { return size_m; }
+    double sizeZ() const { return size_z_m > 0.0 ? size_z_m : size_m; }
     // World x/z of texel (tx, tz): texel centres span the whole extent (edges included).
     double texelSizeX() const { return size_m / double(width - 1); }
-    double texelSizeZ() const { return size_m / double(height - 1); }
+    double texelSizeZ() const { return sizeZ() / double(height - 1); }
 };
 
 // Min/max heights (metres) of every quadtree node. Leaf nodes span leaf_texels texels.

@@ -2,6 +2,7 @@
 #include "terrain/terrain.h"
 
 #include "renderer/bindings.h"
+#include "terrain/dem.h"
 #include "terrain/materials.h"
 
 #include <algorithm>
@@ -94,27 +95,41 @@ bool checkGrid(int grid, InputErrors& errors) {
 
 }  // namespace
 
-Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors) {
+Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors, TerrainMapping* mapping) {
     if (!checkGrid(s.grid, errors)) return {};
+    if (!s.dem.empty()) {
+        Dem dem = loadDem(s.dem, s.dem_nodata, s.dem_vertical_scale, errors);
+        if (dem.map.samples.empty()) return {};
+        if (mapping) *mapping = demMapping(dem.info, dem.map.width, dem.map.height);
+        return std::move(dem.map);
+    }
     Heightmap map = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
     if (map.samples.empty() || !checkHeightRange(map, s.height_scale_m, s.height_offset_m, s.heightmap, errors)) return {};
+    if (mapping) *mapping = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     return map;
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
-    Heightmap map = loadChecked(s, errors);
+    TerrainMapping mapping;
+    Heightmap map = loadChecked(s, errors, &mapping);
     if (map.samples.empty()) return nullptr;
-    return create(std::move(map), s, shaders, errors);
+    return create(std::move(map), mapping, s, shaders, errors);
 }
 
 std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSettings& s, ShaderLibrary& shaders,
                                          InputErrors& errors, int max_texture) {
+    TerrainMapping mapping{s.size_m, s.height_scale_m, s.height_offset_m, heightmap.width, heightmap.height};
+    return create(std::move(heightmap), mapping, s, shaders, errors, max_texture);
+}
+
+std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMapping& mapping, const TerrainSettings& s,
+                                         ShaderLibrary& shaders, InputErrors& errors, int max_texture) {
     if (!checkGrid(s.grid, errors)) return nullptr;
     std::unique_ptr<Terrain> t(new Terrain);
     t->source_ = s;
     t->map_ = std::move(heightmap);
     const Heightmap& map = t->map_;
-    t->mapping_ = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
+    t->mapping_ = mapping;
     t->tree_ = MinMaxQuadtree(map, t->mapping_, s.grid);
     t->errors_ = GridErrors(map, t->mapping_, s.grid, t->tree_.levels());
 
@@ -159,7 +174,7 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     }
     glUseProgram(normals->id());
     glProgramUniform2f(normals->id(), 0, float(t->mapping_.texelSizeX()), float(t->mapping_.texelSizeZ()));
-    glProgramUniform1f(normals->id(), 1, s.height_scale_m);
+    glProgramUniform1f(normals->id(), 1, float(t->mapping_.height_scale_m));
     t->bindTiles(normals->id(), 2);
     glBindTextureUnit(binding::kTex0, t->height_.id());
     glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
@@ -167,7 +182,7 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     // Once at load, not per frame: a failed allocation must not leave a silently flat terrain.
     if (GLenum e = glGetError(); e != GL_NO_ERROR) {
-        errors.push_back({s.heightmap, 0, "the GL could not hold the terrain (" + std::to_string(map.width) + "x" +
+        errors.push_back({s.dem.empty() ? s.heightmap : s.dem, 0, "the GL could not hold the terrain (" + std::to_string(map.width) + "x" +
                                               std::to_string(map.height) + " in " + std::to_string(layers) +
                                               " tiles), GL error " + std::to_string(e)});
         return nullptr;
@@ -209,21 +224,17 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainSetti
 bool Terrain::matches(const TerrainSettings& s) const {
     return s.heightmap == source_.heightmap && s.raw_width == source_.raw_width && s.raw_height == source_.raw_height &&
            s.size_m == source_.size_m && s.height_scale_m == source_.height_scale_m &&
-           s.height_offset_m == source_.height_offset_m && s.grid == source_.grid;
+           s.height_offset_m == source_.height_offset_m && s.grid == source_.grid && s.dem == source_.dem &&
+           s.dem_nodata == source_.dem_nodata && s.dem_vertical_scale == source_.dem_vertical_scale;
 }
 
-double terrainHeightAt(const Heightmap& map, const TerrainSettings& s, double x, double z) {
-    const TerrainMapping mapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
-    double tx = (x - s.origin.x + mapping.size_m * 0.5) / mapping.texelSizeX();
-    double tz = (z - s.origin.z + mapping.size_m * 0.5) / mapping.texelSizeZ();
-    return s.origin.y + mapping.height_offset_m + mapping.height_scale_m * map.sample(tx, tz);
+double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z) {
+    double tx = (x - origin.x + mapping.sizeX() * 0.5) / mapping.texelSizeX();
+    double tz = (z - origin.z + mapping.sizeZ() * 0.5) / mapping.texelSizeZ();
+    return origin.y + mapping.height_offset_m + mapping.height_scale_m * map.sample(tx, tz);
 }
 
-double Terrain::heightAt(double x, double z) const {
-    double tx = (x - source_.origin.x + mapping_.size_m * 0.5) / mapping_.texelSizeX();
-    double tz = (z - source_.origin.z + mapping_.size_m * 0.5) / mapping_.texelSizeZ();
-    return source_.origin.y + mapping_.height_offset_m + mapping_.height_scale_m * map_.sample(tx, tz);
-}
+double Terrain::heightAt(double x, double z) const { return terrainHeightAt(map_, mapping_, source_.origin, x, z); }
 
 const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
                                 double error_scale, const Frustum* caster_frustum, std::span<const Frustum> extra) {
@@ -277,7 +288,8 @@ void Terrain::appendInstances(const std::vector<SelectedNode>& nodes, std::vecto
                               std::vector<float>* distances) const {
     const std::size_t first = out.size();
     if (distances) distances->clear();
-    glm::dvec2 map_max = glm::dvec2(mapping_.size_m * 0.5) - glm::dvec2(camera_.x - source_.origin.x, camera_.z - source_.origin.z);
+    glm::dvec2 map_max = 0.5 * glm::dvec2(mapping_.sizeX(), mapping_.sizeZ()) -
+                         glm::dvec2(camera_.x - source_.origin.x, camera_.z - source_.origin.z);
     for (const SelectedNode& node : nodes) {
         // The mesh is a half-node grid: a whole node is drawn as its four quadrants, a
         // partial node (one quadrant of a level-L node, see SelectedNode) as one.
@@ -336,10 +348,10 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
     }
     glm::dvec3 rel = camera_ - s.origin;  // camera relative to the map centre
     glProgramUniform1i(program, 0, s.grid / 2);
-    glProgramUniform2f(program, 1, float(-mapping_.size_m * 0.5 - rel.x), float(-mapping_.size_m * 0.5 - rel.z));
+    glProgramUniform2f(program, 1, float(-mapping_.sizeX() * 0.5 - rel.x), float(-mapping_.sizeZ() * 0.5 - rel.z));
     glProgramUniform2f(program, 2, float(mapping_.texelSizeX()), float(mapping_.texelSizeZ()));
     glProgramUniform2f(program, 3, float(mapping_.height_scale_m), float(mapping_.height_offset_m - rel.y));
-    glProgramUniform2f(program, 9, float(mapping_.size_m * 0.5 - rel.x), float(mapping_.size_m * 0.5 - rel.z));
+    glProgramUniform2f(program, 9, float(mapping_.sizeX() * 0.5 - rel.x), float(mapping_.sizeZ() * 0.5 - rel.z));
     bindTiles(program, 10);
     glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
                        s.lod_metric == LodMetric::Error ? 1 : 0);

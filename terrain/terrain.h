@@ -44,22 +44,27 @@ struct TerrainTiles {
     glm::ivec2 layer{1};  // texels per layer
 };
 
-// Ground height (m) of a heightmap placed by s (size, height scale and offset, origin) at world
-// x/z, bilinear, clamped to the map's edge outside it: Terrain::heightAt() without GL (`vista check`).
-double terrainHeightAt(const Heightmap& map, const TerrainSettings& s, double x, double z);
+// Ground height (m) of a heightmap placed by mapping around origin ([terrain] origin) at world
+// x/z, bilinear, clamped to the map's edge outside it: Terrain::heightAt(), and `vista check`
+// without GL.
+double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z);
 
 class Terrain {
 public:
     // Loads everything the settings name; on bad input returns null with errors (file, what
     // is accepted). Needs a current GL context and the shader library.
     static std::unique_ptr<Terrain> load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
-    // The checks load() makes without GL (heightmap file, samples, height range, grid), for
-    // `vista check`; returns the map when they pass (empty otherwise, with errors).
-    static Heightmap loadChecked(const TerrainSettings& s, InputErrors& errors);
+    // The checks load() makes without GL (heightmap or DEM file, samples, height range, grid),
+    // for `vista check`; returns the map when they pass (empty otherwise, with errors), and its
+    // mapping in *mapping: from the settings for a heightmap, from the data for a DEM.
+    static Heightmap loadChecked(const TerrainSettings& s, InputErrors& errors, TerrainMapping* mapping = nullptr);
     // Same, from a heightmap already in memory (benchmarks, generated maps). max_texture
     // lowers the texture size limit the tiles must fit (tests; 0: GL_MAX_TEXTURE_SIZE).
     static std::unique_ptr<Terrain> create(Heightmap map, const TerrainSettings& s, ShaderLibrary& shaders,
                                            InputErrors& errors, int max_texture = 0);
+    // Same with the mapping given (a DEM's, terrain/dem.h) rather than taken from s.
+    static std::unique_ptr<Terrain> create(Heightmap map, const TerrainMapping& mapping, const TerrainSettings& s,
+                                           ShaderLibrary& shaders, InputErrors& errors, int max_texture = 0);
 
     // True when s names the same data and mapping (no reload needed).
     bool matches(const TerrainSettings& s) const;

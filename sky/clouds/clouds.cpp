@@ -3,11 +3,13 @@
 #include "sky/clouds/clouds.h"
 
 #include "renderer/bindings.h"
+#include "renderer/temporal.h"
 #include "sky/atmosphere.h"
 #include "sky/clouds/cloud_model.h"
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/common.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/vec2.hpp>
 
 #include <algorithm>
@@ -16,7 +18,7 @@
 
 namespace vista {
 
-// std140 mirror of CloudUniforms in sky/shaders/clouds_common.glsl.
+// std140 mirror of CloudUniforms in sky/clouds/shaders/clouds_common.glsl.
 struct Clouds::Gpu {
     struct Layer {
         glm::vec4 shell, noise, shape;
@@ -26,8 +28,28 @@ struct Clouds::Gpu {
 };
 
 std::vector<ProgramKeyText> cloudPrograms() {
-    return {{"sky/clouds/shaders/clouds.glsl", {}}, {"sky/clouds/shaders/clouds.glsl", {"HALF_RES"}},
-            {"sky/clouds/shaders/clouds_composite.glsl", {}}, {"sky/clouds/shaders/cloud_shadow.glsl", {}}};
+    return {{"sky/clouds/shaders/clouds.glsl", {}},
+            {"sky/clouds/shaders/clouds.glsl", {"HALF_RES"}},
+            {"sky/clouds/shaders/clouds.glsl", {"TEMPORAL"}},
+            {"sky/clouds/shaders/clouds.glsl", {"HALF_RES", "TEMPORAL"}},
+            {"sky/clouds/shaders/clouds_temporal.glsl", {}},
+            {"sky/clouds/shaders/clouds_composite.glsl", {}},
+            {"sky/clouds/shaders/cloud_shadow.glsl", {}}};
+}
+
+void Clouds::releaseHistory(GlDevice& device) {
+    for (int i = 0; i < 2; ++i) {
+        if (history_[i].id() != 0) device.destroyTexture(history_[i].id());
+        if (history_distance_[i].id() != 0) device.destroyTexture(history_distance_[i].id());
+        history_[i] = {};
+        history_distance_[i] = {};
+    }
+    history_valid_ = false;
+}
+
+std::size_t Clouds::memoryBytes() const {
+    return std::size_t(uniforms_.size()) + history_[0].bytes() + history_[1].bytes() + history_distance_[0].bytes() +
+           history_distance_[1].bytes();
 }
 
 Clouds::Clouds() : uniforms_(gl::Buffer::create(sizeof(Gpu), nullptr, GL_DYNAMIC_STORAGE_BIT, "cloud uniforms")) {}
@@ -65,6 +87,9 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     g.sun = glm::vec4(glm::vec3(sun), float(slant));
     shadow_size_ = clouds.shadow_size;
     half_resolution_ = clouds.half_resolution;
+    temporal_ = clouds.temporal && clouds.temporal_blend < 1.0f;
+    temporal_blend_ = clouds.temporal_blend;
+    if (!temporal_) releaseHistory(rc.device);  // history off keeps nothing
     shadow_map_ = glm::vec4(float(rel.x), float(rel.y), float(1.0 / extent), float(slant));
     // Written while the graph is built: both passes of this frame read the same block.
     glNamedBufferSubData(uniforms_.id(), 0, sizeof g, &g);
@@ -98,37 +123,49 @@ TextureHandle Clouds::addShadowPass(FrameGraph& graph, const RenderContext& rc, 
         }).shadow;
 }
 
-void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets) {
+void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets,
+                          bool cut) {
     struct Data {
-        TextureHandle out, depth, transmittance;
+        TextureHandle out, distance, depth, transmittance;
     };
     const TextureHandle transmittance = sky.frameTransmittance();
-    const bool half = half_resolution_;
+    const bool half = half_resolution_, temporal = temporal_;
+    const bool own_target = half || temporal;  // else blended straight over targets.hdr
+    const TextureDesc cloud_desc = half ? TextureDesc{(rc.view.width + 1) / 2, (rc.view.height + 1) / 2, PixelFormat::RGBA16F}
+                                        : TextureDesc{rc.view.width, rc.view.height, PixelFormat::RGBA16F};
+    std::vector<std::string> defines;
+    if (half) defines.push_back("HALF_RES");
+    if (temporal) defines.push_back("TEMPORAL");
     const Data& d = graph.addPass<Data>("clouds.shell",
         [&](PassBuilder& b, Data& data) {
             data.transmittance = b.read(transmittance);
             data.depth = b.read(targets.depth);
-            if (half) {
-                const TextureDesc desc{(rc.view.width + 1) / 2, (rc.view.height + 1) / 2, PixelFormat::RGBA16F};
-                data.out = b.write(b.create("clouds.half", desc));
+            if (own_target) {
+                data.out = b.write(b.create(half ? "clouds.half" : "clouds.full", cloud_desc));
+                if (temporal)
+                    data.distance = b.write(
+                        b.create("clouds.distance", {cloud_desc.width, cloud_desc.height, PixelFormat::R32F}));
             } else {
                 data.out = b.write(targets.hdr);
             }
         },
-        [this, &rc, &sky, half](const Data& data, PassContext& ctx) {
+        [this, &rc, &sky, own_target, temporal, defines](const Data& data, PassContext& ctx) {
             bind();
             sky.bindFrameUniforms();
             const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            if (half) {
+            if (temporal)
+                bindTarget(rc.device.framebuffer({ctx.texture(data.out), ctx.texture(data.distance)}), desc.width,
+                           desc.height);
+            else
+                bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
+            if (own_target) {
                 glClearColor(0, 0, 0, 0);
                 glClear(GL_COLOR_BUFFER_BIT);
             }
-            glUseProgram(rc.shaders.get("sky/clouds/shaders/clouds.glsl", half ? std::vector<std::string>{"HALF_RES"}
-                                                                        : std::vector<std::string>{})->id());
+            glUseProgram(rc.shaders.get("sky/clouds/shaders/clouds.glsl", defines)->id());
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.depth));
-            if (!half) {
+            if (!own_target) {
                 glEnable(GL_BLEND);
                 glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied: hdr = clouds + hdr * (1 - a)
             }
@@ -136,14 +173,15 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
             glDisable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ZERO);
         });
-    if (!half) {
+    if (!own_target) {
         targets.hdr = d.out;
         return;
     }
+    TextureHandle clouds = d.out;
+    if (temporal) clouds = addTemporalPass(graph, rc, d.out, d.distance, cloud_desc, cut);
     struct Composite {
         TextureHandle clouds, depth, hdr;
     };
-    const TextureHandle clouds = d.out;
     const Composite& c = graph.addPass<Composite>("clouds.composite",
         [&](PassBuilder& b, Composite& data) {
             data.clouds = b.read(clouds);
@@ -169,6 +207,69 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
             glBlendFunc(GL_ONE, GL_ZERO);
         });
     targets.hdr = c.hdr;
+}
+
+TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc, TextureHandle march,
+                                      TextureHandle distance, const TextureDesc& desc, bool cut) {
+    const int w = desc.width, h = desc.height;
+    if (history_[0].width() != w || history_[0].height() != h) {
+        releaseHistory(rc.device);
+        for (int i = 0; i < 2; ++i) {
+            history_[i] = gl::Texture::create2D(w, h, GL_RGBA16F, 1, "clouds.temporal history");
+            history_distance_[i] = gl::Texture::create2D(w, h, GL_RG16F, 1, "clouds.temporal distance (km, frames)");
+            // Distances are not interpolated: a blend of a cloud's distance and "none" is neither.
+            glTextureParameteri(history_distance_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(history_distance_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        history_valid_ = false;
+    }
+    const bool history = history_valid_ && !cut;
+    history_frames_ = history ? std::min(history_frames_ + 1, int(std::lround(1.0 / temporal_blend_))) : 1;
+    const glm::mat4 prev_clip(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0));
+    const glm::vec4 shift(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), 0.0f);
+    const glm::vec4 params(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y);
+    history_view_ = rc.view;
+    history_valid_ = true;
+    const int read = history_current_, write = 1 - history_current_;
+    history_current_ = write;
+
+    struct Data {
+        TextureHandle march, distance, history, history_distance, out, out_distance;
+    };
+    const TextureHandle h_in = graph.importTexture("clouds.history", {w, h, PixelFormat::RGBA16F}, history_[read].id());
+    const TextureHandle hd_in = graph.importTexture("clouds.history_distance", {w, h, PixelFormat::RG16F},
+                                                    history_distance_[read].id());
+    const TextureHandle h_out = graph.importTexture("clouds.history_next", {w, h, PixelFormat::RGBA16F}, history_[write].id());
+    const TextureHandle hd_out = graph.importTexture("clouds.history_distance_next", {w, h, PixelFormat::RG16F},
+                                                     history_distance_[write].id());
+    return graph.addPass<Data>("clouds.temporal",
+        [&](PassBuilder& b, Data& d) {
+            d.march = b.read(march);
+            d.distance = b.read(distance);
+            d.history = b.read(h_in);
+            d.history_distance = b.read(hd_in);
+            d.out = b.write(h_out);
+            d.out_distance = b.write(hd_out);
+        },
+        [&rc, prev_clip, shift, params](const Data& d, PassContext& ctx) {
+            const TextureDesc& out = ctx.desc(d.out);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.out_distance)}), out.width, out.height);
+            const GLuint program = rc.shaders.get("sky/clouds/shaders/clouds_temporal.glsl")->id();
+            glUseProgram(program);
+            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(prev_clip));
+            glProgramUniform4fv(program, 1, 1, glm::value_ptr(shift));
+            glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+            const GLuint history = ctx.texture(d.history);
+            glTextureParameteri(history, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(history, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(history, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(history, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glBindTextureUnit(binding::kTex0, ctx.texture(d.march));
+            glBindTextureUnit(binding::kTex1, ctx.texture(d.distance));
+            glBindTextureUnit(binding::kTex2, history);
+            glBindTextureUnit(binding::kTex3, ctx.texture(d.history_distance));
+            drawFullscreen(rc);
+        }).out;
 }
 
 }  // namespace vista

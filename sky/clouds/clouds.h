@@ -33,23 +33,46 @@ public:
     int prepare(const RenderContext& rc, const CloudsSettings& clouds, const SkySettings& sky,
                 const glm::dvec3& sky_irradiance_up);
     // GPU bytes held across frames (its uniform block; the maps are transient).
-    std::size_t memoryBytes() const { return std::size_t(uniforms_.size()); }
+    std::size_t memoryBytes() const;
     // "clouds.shadow": an R16F shadow_size^2 map of the sun's transmittance (1 = clear);
     // map: what lighting.sun needs to sample it (xy its centre minus the camera, world x/z m,
     // z 1 / extent (1/m), w the sun's slant max(sun y, 0.05)).
     TextureHandle addShadowPass(FrameGraph& graph, const RenderContext& rc, glm::vec4& map);
     // "clouds.shell": the layers over targets.hdr (after "sky.atmosphere"), cut at targets.depth;
     // with half_resolution into a half-size "clouds.half" that "clouds.composite" upsamples.
-    void addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets);
+    // With [clouds] temporal the march goes to a target of its own (half or full size) with its
+    // distances, "clouds.temporal" accumulates it with the reprojected history (kept here, across
+    // frames) and "clouds.composite" blends the result. cut: drop the history (a camera cut).
+    void addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets,
+                      bool cut = false);
+    // Tells the device the history textures are going (it caches framebuffers by texture name)
+    // and drops them; call before destroying this object.
+    void releaseHistory(GlDevice& device);
+    // Drops the accumulated history (FrameRenderer::resetHistory).
+    void resetHistory() { history_valid_ = false; }
+    // Frames accumulated in the history at most (0: none yet), for the clouds.history_frames counter.
+    int historyFrames() const { return history_valid_ ? history_frames_ : 0; }
 
 private:
     struct Gpu;
     void bind() const;
+    // "clouds.temporal": march (and its distances) blended with the reprojected history; returns
+    // the accumulated clouds (this frame's history).
+    TextureHandle addTemporalPass(FrameGraph& graph, const RenderContext& rc, TextureHandle march, TextureHandle distance,
+                                  const TextureDesc& desc, bool cut);
 
     gl::Buffer uniforms_;
     int shadow_size_ = 256;
     bool half_resolution_ = true;
     glm::vec4 shadow_map_{0.0f};
+    // Temporal accumulation: colour (RGBA16F) and distance (km) + frames (RG16F), ping-ponged.
+    bool temporal_ = true;
+    float temporal_blend_ = 0.0625f;
+    gl::Texture history_[2], history_distance_[2];
+    int history_current_ = 0;
+    int history_frames_ = 0;
+    bool history_valid_ = false;
+    ViewParams history_view_;
 };
 
 }  // namespace vista

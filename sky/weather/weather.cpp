@@ -152,7 +152,7 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             glProgramUniform4f(program, 4, s.splash_size_m, s.splash_radius_m, 0.2f + 0.25f * s.intensity, float(kSplashCellM));
             glProgramUniform4f(program, 5, ambient.r, ambient.g, ambient.b, 0.0f);
             glProgramUniform4f(program, 6, sun.r, sun.g, sun.b, 0.0f);
-            glProgramUniform2f(program, 7, float(-m.size_m * 0.5 - rel.x), float(-m.size_m * 0.5 - rel.z));
+            glProgramUniform2f(program, 7, float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z));
             glProgramUniform2f(program, 8, float(m.texelSizeX()), float(m.texelSizeZ()));
             glProgramUniform2f(program, 9, float(m.height_scale_m), float(m.height_offset_m - rel.y));
             terrain->bindTiles(program, 10);

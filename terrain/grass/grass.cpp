@@ -39,12 +39,14 @@ bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const Grass
         ++level;
     const double n = double(tree.leafTexels() << level);
     const glm::ivec2 nodes = tree.nodesPerSide(level);
-    auto node = [&](double world, double origin, double texel, int count) {
-        double t = (world - origin + m.size_m * 0.5) / texel / n;
+    auto node = [&](double world, double origin, double extent, double texel, int count) {
+        double t = (world - origin + extent * 0.5) / texel / n;
         return std::clamp(int(std::floor(t)), 0, count - 1);
     };
-    const int x0 = node(eye.x - r, ts.origin.x, m.texelSizeX(), nodes.x), x1 = node(eye.x + r, ts.origin.x, m.texelSizeX(), nodes.x);
-    const int z0 = node(eye.z - r, ts.origin.z, m.texelSizeZ(), nodes.y), z1 = node(eye.z + r, ts.origin.z, m.texelSizeZ(), nodes.y);
+    const int x0 = node(eye.x - r, ts.origin.x, m.sizeX(), m.texelSizeX(), nodes.x),
+              x1 = node(eye.x + r, ts.origin.x, m.sizeX(), m.texelSizeX(), nodes.x);
+    const int z0 = node(eye.z - r, ts.origin.z, m.sizeZ(), m.texelSizeZ(), nodes.y),
+              z1 = node(eye.z + r, ts.origin.z, m.sizeZ(), m.texelSizeZ(), nodes.y);
     double top = -1e300;
     for (int z = z0; z <= z1; ++z)
         for (int x = x0; x <= x1; ++x) top = std::max(top, double(tree.minMax(level, x, z).y));
@@ -112,7 +114,7 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
             glProgramUniform4f(program, 3, s.radius_m, std::min(s.thin_start, 0.999f) * s.radius_m, s.far_keep,
                                s.lod_distance_m);
             glProgramUniform4f(program, 4, s.blade_height_m, s.height_variation, s.blade_width_m, s.curvature);
-            glProgramUniform4f(program, 5, float(-m.size_m * 0.5 - rel.x), float(-m.size_m * 0.5 - rel.z),
+            glProgramUniform4f(program, 5, float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z),
                                float(m.texelSizeX()), float(m.texelSizeZ()));
             glProgramUniform2f(program, 6, float(m.height_scale_m), float(m.height_offset_m - rel.y));
             terrain.bindTiles(program, 7);

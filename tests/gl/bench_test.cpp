@@ -1,6 +1,7 @@
 // Each bench run as a user runs it, at test size, on the default scene (which has the sea,
 // grass, clouds and lights on): its key figure is pinned, so a feature that leaks into a bench
 // or a regression in what it measures fails here, not in a reader's hands months later.
+#include "cli_runner.h"
 #include "gl_fixture.h"
 
 #include <nlohmann/json.hpp>
@@ -14,24 +15,14 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string output;  // stdout and stderr
+struct Run : vista::test::Run {
     nlohmann::json json;
 };
 
 // Runs `vista bench ARGS --json FILE` and parses FILE.
 Run bench(const std::string& args, const vista::test::TempDir& dir) {
     const std::filesystem::path file = dir.path / "bench.json";
-    std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + VISTA_EXECUTABLE + " bench " + args + " --json " +
-                      file.string() + " 2>&1";
-    Run r{-1, {}, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    Run r{vista::test::runVista("bench " + args + " --json " + file.string()), {}};
     if (r.code == 0) r.json = nlohmann::json::parse(std::ifstream(file));
     return r;
 }
@@ -93,6 +84,25 @@ TEST_CASE("gl: bench grass draws blades in proportion to the density") {
     CHECK(b4 > 0.0);
     CHECK(b8 / b4 == doctest::Approx(2.0).epsilon(0.2));
     CHECK(b8 <= r.json["rows"][1]["considered"].get<double>());
+}
+
+TEST_CASE("gl: bench objects places the trees asked for, draws some, keeps 32 bytes + 4 slots an instance") {
+    vista::test::TempDir dir("bench-objects");
+    Run r = bench("objects --size 96x54 --frames 1 --trees 1000,10000", dir);
+    REQUIRE_MESSAGE(r.code == 0, r.output);
+    CAPTURE(r.output);
+    CHECK(contains(r.json["scene"]["disabled"], "grass.enabled=false"));
+    REQUIRE(r.json["rows"].size() == 2);
+    for (const auto& row : r.json["rows"]) {
+        const double trees = row["trees"], placed = row["placed"], drawn = row["drawn"];
+        CHECK(placed == doctest::Approx(trees).epsilon(0.05));  // density x area, every ground accepted
+        CHECK(drawn > 0.0);
+        CHECK(drawn < placed);  // culled on the GPU
+        CHECK(row["triangles"].get<double>() > drawn);
+        CHECK(row["instance_bytes"].get<double>() == placed * 48.0);
+    }
+    // 100,000 trees would hold 4.8 MB of instances and lists, inside the 16 MB.
+    CHECK(100000.0 * 48.0 <= 16.0e6);
 }
 
 TEST_CASE("gl: bench lights, every culling method shades every pair that needs it, and culls") {

@@ -1,4 +1,6 @@
 // The vista executable as a user runs it: exit codes and messages of check and capture.
+#include "app/scene.h"
+#include "cli_runner.h"
 #include "gl_fixture.h"
 
 #include <algorithm>
@@ -14,22 +16,8 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string output;  // stdout and stderr
-};
-
-Run run(const std::string& args) {
-    std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + VISTA_EXECUTABLE + " " + args + " 2>&1";
-    Run r{-1, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using vista::test::Run;
+Run run(const std::string& args) { return vista::test::runVista(args); }
 
 }  // namespace
 
@@ -44,6 +32,15 @@ TEST_CASE("gl: vista check accepts the default scene and lists every error of a 
     CHECK(r.output.find("did you mean 'width'") != std::string::npos);
     CHECK(r.output.find("broken.ini:3:") != std::string::npos);
     CHECK(r.output.find("broken.ini:5:") != std::string::npos);
+}
+
+TEST_CASE("gl: vista check --reference prints the scene-file reference that docs/scene-file.md holds") {
+    Run r = run("check --reference");
+    CHECK(r.code == 0);
+    std::ifstream in(vista::vistaRoot() / "docs/scene-file.md", std::ios::binary);
+    std::stringstream committed;
+    committed << in.rdbuf();
+    CHECK(r.output == committed.str());
 }
 
 TEST_CASE("gl: bad command lines and overrides exit 2 with a message") {

@@ -40,19 +40,11 @@ struct Rendered {
 Rendered render(const Settings& s, const ViewParams& view, double t = 0.0) {
     FrameRenderer& r = renderer();
     REQUIRE(r.prepare(s).empty());
-    r.counters().collect(true);
-    std::vector<std::uint16_t> half;
+    r.resetHistory();  // each frame the first of a run: frames compare without history or jitter differences
     FrameRequest request;
-    request.capture_hdr = &half;
     request.count_nonfinite = true;
-    FrameReport report = r.render(s, view, t, request);
-    Rendered out;
-    out.executed = report.executed;
-    for (const auto& c : r.counters().collect(true))
-        if (c.name == "nonfinite_pixels") out.nonfinite += c.value;
-    out.hdr.resize(half.size());
-    for (std::size_t i = 0; i < half.size(); ++i) out.hdr[i] = glm::unpackHalf1x16(half[i]);
-    return out;
+    test::RenderedFrame f = test::renderFrame(r, s, view, t, request);
+    return Rendered{std::move(f.rgba), f.counter("nonfinite_pixels"), std::move(f.report.executed)};
 }
 
 bool hasPrefix(const std::vector<std::string>& passes, const std::string& prefix) {
@@ -76,21 +68,8 @@ double meanAbsDiff(const Rendered& a, const Rendered& b) {
 
 TEST_CASE("gl: cloud noise and fBm on the GPU match the double-precision CPU mirror") {
     FrameRenderer& r = renderer();
-    auto* program = r.shaders().get("tests/gl/shaders/cloud_noise_probe.glsl");
-    REQUIRE(program);
     const int w = 96, h = 64;
-    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "probe");
-    gl::Framebuffer fb = gl::createFramebuffer("probe");
-    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    gl::VertexArray vao = gl::createVertexArray("probe");
-    glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-    glViewport(0, 0, w, h);
-    glUseProgram(program->id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
-    glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const std::vector<float> texels = test::drawProbe(r.shaders(), "tests/gl/shaders/cloud_noise_probe.glsl", w, h);
     double worst_noise = 0.0, worst_fbm = 0.0, lo = 1.0, hi = 0.0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -175,14 +154,9 @@ TEST_CASE("gl: cloud shadows only take sunlight away, and a full overcast takes 
     s.ssao.enabled = false;
     s.sky.sun_elevation_deg = 50.0f;
     s.sky.aerial_perspective = false;
-    Heightmap map{65, 65, std::vector<float>(65 * 65)};
-    for (int z = 0; z < 65; ++z)
-        for (int x = 0; x < 65; ++x)
-            map.samples[std::size_t(z * 65 + x)] = 0.5f + 0.3f * std::sin(float(x) * 0.2f) * std::cos(float(z) * 0.15f);
-    InputErrors errors;
-    auto terrain = Terrain::create(std::move(map), s.terrain, renderer().shaders(), errors);
-    REQUIRE(terrain);
-    renderer().adoptTerrain(std::move(terrain));
+    test::adoptTerrain(renderer(), s.terrain, 65, [](int x, int z) {
+        return 0.5f + 0.3f * std::sin(float(x) * 0.2f) * std::cos(float(z) * 0.15f);
+    });
     const ViewParams down{{0.0, 600.0, 0.0}, 0.0, -70.0, 50.0, 0.5, 96, 54};  // terrain in every pixel
 
     Settings clear = s;

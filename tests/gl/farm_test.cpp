@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
@@ -17,12 +18,13 @@ using namespace vista;
 
 namespace {
 
-CaptureJob farmJob(const std::filesystem::path& out, const std::vector<std::string>& overrides, int frames) {
+CaptureJob farmJob(const std::filesystem::path& out, const std::vector<std::string>& overrides, int frames,
+                   float fps = 4.0f) {
     CaptureJob job;
     REQUIRE(loadScene(defaultScenePath(), overrides, job.settings).empty());
     job.settings.capture.out = out.string();
     job.settings.capture.frames = frames;
-    job.settings.capture.fps = 4.0f;  // 0.25 s steps: adaptation is far from settled between frames
+    job.settings.capture.fps = fps;  // 4: 0.25 s steps, adaptation is far from settled between frames
     job.settings.capture.width = 64;
     job.settings.capture.height = 36;
     job.progress = false;
@@ -37,21 +39,34 @@ std::vector<unsigned char> pixels(const std::filesystem::path& file) {
     return p;
 }
 
-int maxDifference(const std::filesystem::path& a, const std::filesystem::path& b) {
+struct Difference {
+    int worst = 0;               // largest 8-bit difference of any channel
+    double psnr_db = 1.0e9;      // PSNR of the 8-bit RGB images (peak 255); huge when identical
+};
+
+Difference difference(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::vector<unsigned char> pa = pixels(a), pb = pixels(b);
     REQUIRE(pa.size() == pb.size());
-    int worst = 0;
-    for (std::size_t i = 0; i < pa.size(); ++i) worst = std::max(worst, std::abs(int(pa[i]) - int(pb[i])));
-    return worst;
+    Difference d;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < pa.size(); ++i) {
+        const int e = std::abs(int(pa[i]) - int(pb[i]));
+        d.worst = std::max(d.worst, e);
+        sum += double(e) * e;
+    }
+    if (sum > 0.0) d.psnr_db = 10.0 * std::log10(255.0 * 255.0 / (sum / double(pa.size())));
+    return d;
 }
 
-// Renders frames sequentially and as shards of 2; the largest 8-bit difference of any frame.
-int shardDifference(const std::string& name, const std::vector<std::string>& overrides, int frames) {
+// Renders frames sequentially and as shards of 2; the largest 8-bit difference and the lowest
+// PSNR of any frame.
+Difference shardDifference(const std::string& name, const std::vector<std::string>& overrides, int frames,
+                           float fps = 4.0f) {
     test::TempDir dir(name);
-    CaptureJob seq = farmJob(dir.path / "seq", overrides, frames);
+    CaptureJob seq = farmJob(dir.path / "seq", overrides, frames, fps);
     REQUIRE(runCapture(seq).exit_code == 0);
     for (int k = 0; k < 2; ++k) {
-        CaptureJob shard = farmJob(dir.path / "shards", overrides, frames);
+        CaptureJob shard = farmJob(dir.path / "shards", overrides, frames, fps);
         shard.selection.shard = k;
         shard.selection.shards = 2;
         CaptureResult r = runCapture(shard);
@@ -60,10 +75,13 @@ int shardDifference(const std::string& name, const std::vector<std::string>& ove
         CHECK(r.settle_frames == shard.settings.capture.settle_frames);
         CHECK(std::filesystem::exists(dir.path / "shards" / ("manifest-shard-" + std::to_string(k) + "-of-2.json")));
     }
-    int worst = 0;
-    for (int i = 0; i < frames; ++i)
-        worst = std::max(worst, maxDifference(captureFileName(dir.path / "seq", i, ImageFormat::Png),
-                                              captureFileName(dir.path / "shards", i, ImageFormat::Png)));
+    Difference worst;
+    for (int i = 0; i < frames; ++i) {
+        const Difference d = difference(captureFileName(dir.path / "seq", i, ImageFormat::Png),
+                                        captureFileName(dir.path / "shards", i, ImageFormat::Png));
+        worst.worst = std::max(worst.worst, d.worst);
+        worst.psnr_db = std::min(worst.psnr_db, d.psnr_db);
+    }
     // The shards fit together as one capture.
     std::vector<LoadedManifest> manifests;
     for (const auto& file : findManifests(dir.path / "shards")) {
@@ -82,25 +100,39 @@ int shardDifference(const std::string& name, const std::vector<std::string>& ove
 TEST_CASE("gl: capture shards with finite-memory state (motion blur, weather) are bit-identical to a sequential run") {
     // Motion blur keeps the previous camera and weather its previous position: one frame of
     // memory, so two settle frames rebuild them exactly. Manual exposure: no infinite memory.
-    int worst = shardDifference("farm-finite",
-                                {"postfx.motion_blur.enabled=true", "weather.enabled=true", "postfx.exposure.mode=manual",
-                                 "capture.settle_frames=2"},
-                                4);
-    CHECK(worst == 0);
+    // TAA and the clouds' accumulation off: their histories are exponential (the next test).
+    const Difference d = shardDifference("farm-finite",
+                                         {"postfx.motion_blur.enabled=true", "weather.enabled=true",
+                                          "postfx.exposure.mode=manual", "postfx.taa.enabled=false",
+                                          "clouds.temporal=false", "capture.settle_frames=2"},
+                                         4);
+    CHECK(d.worst == 0);
 }
 
-TEST_CASE("gl: capture shards with auto exposure stay within 1/255 of a sequential run") {
-    // Auto exposure adapts exponentially (infinite memory): after S settle frames a shard's
-    // state differs from the sequential one by exp(-rate * S / fps) of the gap it started
-    // with; at 4 settle frames and 4 fps that was below 1/255 of the image (measured: 0). Four,
-    // not the default 8, keeps the test short.
-    int worst = shardDifference("farm-auto", {"capture.settle_frames=4"}, 4);
-    CHECK(worst <= 1);
+TEST_CASE("gl: capture shards of the default scene (auto exposure, TAA, temporal clouds) stay within the stated tolerance") {
+    // Auto exposure, TAA and the clouds' accumulation all blend exponentially (infinite
+    // memory): a shard's first frame keeps a trace of a history that started S frames later
+    // than the sequential run's, so frames are not bit-identical. The jitter and blue-noise
+    // index follow the path frame (not the frames since the reset), so that trace is all that
+    // differs. 24 fps: the default path moves ~18 m a frame, under the 100 m camera cut (at 4
+    // fps every frame would be a cut and keep no history). The tolerance docs/farm.md states for
+    // the default settle frames (8): PSNR of every 8-bit frame against the sequential run's
+    // >= 40 dB (measured on the default path at 320x180: 44.4 dB).
+    const Difference d =
+        shardDifference("farm-temporal", {"postfx.taa.enabled=true", "clouds.temporal=true"}, 4, 24.0f);
+    MESSAGE("default scene, shards of 2 against a sequential run: largest difference " << d.worst << ", lowest PSNR "
+                                                                                       << d.psnr_db << " dB");
+    CHECK(d.psnr_db >= 40.0);
 }
 
 TEST_CASE("gl: capture --resume keeps frames matching the manifest and renders the rest") {
     test::TempDir dir("farm-resume");
-    const std::vector<std::string> overrides{"capture.settle_frames=1"};
+    // Checksums must match, so no exponential history: TAA, the clouds' accumulation and auto
+    // exposure off (the blue noise changes the clouds' grain with the frame index, so frames -1
+    // and 0, both at the path's start, no longer give the adaptation the same image); one settle
+    // frame rebuilds everything else.
+    const std::vector<std::string> overrides{"capture.settle_frames=1", "postfx.taa.enabled=false", "clouds.temporal=false",
+                                             "postfx.exposure.mode=manual"};
     CaptureJob job = farmJob(dir.path, overrides, 3);
     REQUIRE(runCapture(job).exit_code == 0);
     const auto frame1 = captureFileName(dir.path, 1, ImageFormat::Png);
@@ -124,7 +156,9 @@ TEST_CASE("gl: capture --resume keeps frames matching the manifest and renders t
     CHECK(m.frames.size() == 3);
 
     // A manifest of another scene is not resumed.
-    CaptureJob other = farmJob(dir.path, {"capture.settle_frames=1", "sky.sun_elevation_deg=20"}, 3);
+    std::vector<std::string> other_overrides = overrides;
+    other_overrides.push_back("sky.sun_elevation_deg=20");
+    CaptureJob other = farmJob(dir.path, other_overrides, 3);
     other.resume = true;
     CHECK(runCapture(other).exit_code == 2);
 }

@@ -80,15 +80,19 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
     double parts = counter(base.report, "gpu.transient_bytes");
     for (const char* c : {"terrain.memory_bytes", "grass.memory_bytes", "sky.memory_bytes", "clouds.memory_bytes",
                           "lights.memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "water.memory_bytes",
-                          "weather.memory_bytes", "postfx.memory_bytes"})
+                          "weather.memory_bytes", "postfx.memory_bytes", "objects.memory_bytes"})
         parts += std::max(counter(base.report, c), 0.0);
     CHECK(parts <= base.memory);
     CHECK(parts >= base.memory - 65536.0);  // the rest: frame uniforms and counter buffers
     MESSAGE("all features on: gpu.memory_bytes " << base.memory << " (transient " << counter(base.report, "gpu.transient_bytes") << ")");
 
     const std::vector<Feature> features = {
-        {"terrain", [](Settings& s) { s.terrain.enabled = false; }, {"terrain", "grass", "shadows", "weather.splash"}, "terrain.memory_bytes",
-         [](FrameRenderer& r) { return r.terrain() == nullptr; }},
+        {"terrain", [](Settings& s) { s.terrain.enabled = false; }, {"terrain", "grass", "shadows", "weather.splash", "objects"},
+         "terrain.memory_bytes", [](FrameRenderer& r) { return r.terrain() == nullptr && r.objects() == nullptr; }},
+        {"objects", [](Settings& s) { s.objects.enabled = false; }, {"objects"}, "objects.memory_bytes",
+         [](FrameRenderer& r) { return r.objects() == nullptr; }},
+        {"objects without entries", [](Settings& s) { s.objects.objects.clear(); s.objects.scatters.clear(); }, {"objects"},
+         "objects.memory_bytes", [](FrameRenderer& r) { return r.objects() == nullptr; }},
         {"grass", [](Settings& s) { s.grass.enabled = false; }, {"grass"}, "grass.memory_bytes",
          [](FrameRenderer& r) { return r.grass() == nullptr; }},
         {"sky", [](Settings& s) { s.sky.enabled = false; }, {"sky", "clouds"}, "sky.memory_bytes",
@@ -115,6 +119,8 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
          [](FrameRenderer& r) { return r.postfx().autoExposure() == nullptr; }},
         {"tonemap", [](Settings& s) { s.tonemap.enabled = false; }, {"postfx.tonemap"}, nullptr, nullptr},
         {"fxaa", [](Settings& s) { s.fxaa.enabled = false; }, {"postfx.fxaa"}, nullptr, nullptr},
+        {"taa", [](Settings& s) { s.taa.enabled = false; }, {"postfx.taa"}, nullptr,
+         [](FrameRenderer& r) { return r.taa() == nullptr; }},
         {"grade", [](Settings& s) { s.grade.enabled = false; }, {"postfx.grade"}, nullptr, nullptr},
         {"night_vision", [](Settings& s) { s.night_vision.enabled = false; }, {"postfx.night_vision"}, nullptr, nullptr},
         {"dof", [](Settings& s) { s.dof.enabled = false; }, {"postfx.dof"}, nullptr,

@@ -40,14 +40,9 @@ Settings hillScene() {
 void useHills(const Settings& s) {
     static bool adopted = false;
     if (adopted) return;
-    Heightmap map{65, 65, std::vector<float>(65 * 65)};
-    for (int z = 0; z < 65; ++z)
-        for (int x = 0; x < 65; ++x)
-            map.samples[std::size_t(z * 65 + x)] = 0.5f + 0.3f * std::sin(float(x) * 0.2f) * std::cos(float(z) * 0.15f);
-    InputErrors errors;
-    auto terrain = Terrain::create(std::move(map), s.terrain, renderer().shaders(), errors);
-    REQUIRE(terrain);
-    renderer().adoptTerrain(std::move(terrain));
+    test::adoptTerrain(renderer(), s.terrain, 65, [](int x, int z) {
+        return 0.5f + 0.3f * std::sin(float(x) * 0.2f) * std::cos(float(z) * 0.15f);
+    });
     adopted = true;
 }
 
@@ -71,25 +66,13 @@ struct Lit {
 Lit render(Settings s, LightCulling method, const ViewParams& view, double t = 0.0) {
     useHills(s);
     s.lights.culling = method;
-    FrameRenderer& r = renderer();
-    r.counters().collect(true);  // drop what earlier frames left
-    std::vector<std::uint16_t> half;
     FrameRequest request;
-    request.capture_hdr = &half;
     request.count_lights = true;
     request.count_nonfinite = true;
-    FrameReport report = r.render(s, view, t, request);
-    Lit out;
-    out.executed = report.executed;
-    for (const auto& c : r.counters().collect(true)) {
-        if (c.name == "lights.evaluations") out.evaluations += c.value;
-        if (c.name == "lights.exact") out.exact += c.value;
-        if (c.name == "lights.overflow") out.overflow += c.value;
-        if (c.name == "nonfinite_pixels") out.nonfinite += c.value;
-    }
-    out.hdr.resize(half.size());
-    for (std::size_t i = 0; i < half.size(); ++i) out.hdr[i] = glm::unpackHalf1x16(half[i]);
-    return out;
+    renderer().resetHistory();  // a first frame: no TAA jitter or history, as the test expects
+    test::RenderedFrame f = test::renderFrame(renderer(), s, view, t, request);
+    return Lit{std::move(f.rgba), f.counter("lights.evaluations"), f.counter("lights.exact"), f.counter("lights.overflow"),
+               f.counter("nonfinite_pixels"), std::move(f.report.executed)};
 }
 
 // Largest difference over RGB relative to the brightest naive pixel.
@@ -112,22 +95,7 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 std::vector<float> drawProbe(const std::string& shader, const std::string& define, int w, int h) {
     FrameRenderer& r = renderer();
     REQUIRE(r.localLights());
-    auto* program = r.shaders().get(shader, {define});
-    REQUIRE(program);
-    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "probe");
-    gl::Framebuffer fb = gl::createFramebuffer("probe");
-    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    gl::VertexArray vao = gl::createVertexArray("probe");
-    r.localLights()->bindForForward();
-    glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-    glViewport(0, 0, w, h);
-    glUseProgram(program->id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
-    glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return texels;
+    return test::drawProbe(r.shaders(), shader, {define}, w, h, [&r] { r.localLights()->bindForForward(); });
 }
 
 const ViewParams kView{{-150.0, 120.0, 150.0}, 45.0, -30.0, 60.0, 0.5, 160, 90};
@@ -287,6 +255,7 @@ TEST_CASE("gl: forward light lists cover transparent surfaces in front of the op
         std::vector<unsigned char> ldr;
         request.capture_ldr = &ldr;
         request.forward_lights = forward;
+        r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
         r.render(s, kView, 0.0, request);
         REQUIRE(r.localLights());
         const std::vector<float> texels = drawProbe("tests/gl/shaders/forward_probe.glsl", r.localLights()->define(), w, h);
@@ -342,6 +311,7 @@ TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (
         FrameRequest request;
         std::vector<unsigned char> ldr;
         request.capture_ldr = &ldr;
+        r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
         r.render(s, kView, 0.0, request);
         const std::vector<float> gpu = drawProbe("tests/gl/shaders/light_reference_probe.glsl", "LIGHTS_NAIVE", w, h);
 

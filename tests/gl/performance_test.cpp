@@ -37,15 +37,9 @@ Settings hills() {
 void useHills(const Settings& s) {
     static bool adopted = false;
     if (adopted) return;
-    Heightmap map{129, 129, std::vector<float>(129 * 129)};
-    for (int z = 0; z < 129; ++z)
-        for (int x = 0; x < 129; ++x)
-            map.samples[std::size_t(z * 129 + x)] =
-                0.45f + 0.35f * std::sin(float(x) * 0.21f) * std::cos(float(z) * 0.17f) + 0.1f * std::sin(float(x + z) * 0.05f);
-    InputErrors errors;
-    auto terrain = Terrain::create(std::move(map), s.terrain, renderer().shaders(), errors);
-    REQUIRE(terrain);
-    renderer().adoptTerrain(std::move(terrain));
+    test::adoptTerrain(renderer(), s.terrain, 129, [](int x, int z) {
+        return 0.45f + 0.35f * std::sin(float(x) * 0.21f) * std::cos(float(z) * 0.17f) + 0.1f * std::sin(float(x + z) * 0.05f);
+    });
     adopted = true;
 }
 
@@ -57,21 +51,11 @@ struct Frame {
 
 Frame render(const Settings& s, const ViewParams& view) {
     useHills(s);
-    FrameRenderer& r = renderer();
-    r.counters().collect(true);  // drop what earlier frames left
-    std::vector<std::uint16_t> half;
+    renderer().resetHistory();  // each frame as the first of a run: no TAA history or jitter to tell them apart
     FrameRequest request;
-    request.capture_hdr = &half;
     request.count_lights = true;
-    Frame out;
-    out.report = r.render(s, view, 0.0, request);
-    for (const auto& c : r.counters().collect(true)) {
-        if (c.name == "lights.exact") out.exact += c.value;
-        if (c.name == "lights.shade_draws") out.shade_draws += c.value;
-    }
-    out.hdr.resize(half.size());
-    for (std::size_t i = 0; i < half.size(); ++i) out.hdr[i] = glm::unpackHalf1x16(half[i]);
-    return out;
+    test::RenderedFrame f = test::renderFrame(renderer(), s, view, 0.0, request);
+    return Frame{std::move(f.rgba), std::move(f.report), f.counter("lights.exact"), f.counter("lights.shade_draws")};
 }
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {

@@ -10,6 +10,7 @@
 #include "postfx/lens_flare.h"
 #include "postfx/lut.h"
 #include "sky/atmosphere.h"
+#include "sky/night_light.h"
 #include "postfx/motion_blur.h"
 #include "postfx/grade.h"
 #include "postfx/ssao.h"
@@ -33,6 +34,7 @@ struct Bench {
     PostChain chain;
     std::vector<std::string> executed;
     ViewParams camera;  // the view the passes see (its size is the image's)
+    SkySettings sky;    // the frame's sun and units come from it (as FrameRenderer::context sets them)
 
     template <class AddPasses>
     std::vector<float> run(const std::vector<float>& rgba, int w, int h, double time_s, AddPasses&& add, bool read = true) {
@@ -41,24 +43,14 @@ struct Bench {
         ViewParams view = camera;
         view.width = w, view.height = h;
         RenderContext rc{shaders, device, vao.id(), view, ViewMatrices{}, 0, time_s};
+        rc.sun_direction = sunDirection(sky);
+        rc.sun_illuminance = sky.sun_illuminance;
+        rc.cd_per_value = luxPerHdrUnit(sky.sun_illuminance);
         FrameGraph graph;
         TextureHandle in = graph.importTexture("input", {w, h, PixelFormat::RGBA32F}, input.id());
         TextureHandle out = add(graph, rc, in);
-        struct Data {
-            TextureHandle t;
-        };
         std::vector<float> result;
-        if (read) graph.addPass<Data>("test.readback",
-            [&](PassBuilder& b, Data& d) {
-                d.t = b.read(out);
-                b.sideEffect();
-            },
-            [&result](const Data& d, PassContext& ctx) {
-                const TextureDesc& desc = ctx.desc(d.t);
-                result.resize(std::size_t(desc.width) * std::size_t(desc.height) * 4);
-                glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(result.size() * sizeof(float)),
-                                  result.data());
-            });
+        if (read) test::addReadback(graph, out, result);
         graph.compile();
         graph.execute(pool, nullptr);
         pool.endFrame();
@@ -68,6 +60,7 @@ struct Bench {
     // shown = false: nothing reads the chain's image (an HDR-only capture), the graph culls it.
     std::vector<float> chainRun(const std::vector<float>& rgba, int w, int h, const Settings& s, double time_s = 0.0,
                                 bool shown = true) {
+        sky = s.sky;
         return run(rgba, w, h, time_s, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in) {
             return chain.addPasses(g, rc, in, s, {}, shown);
         }, shown);
@@ -126,6 +119,13 @@ TEST_CASE("gl: the post chain runs in [postfx] order, disabled effects add no pa
     const std::vector<float> image = uniform(32, 18, 0.5f);
     bench.chainRun(image, 32, 18, s);
     std::vector<std::string> passes = postfxPasses(bench.executed);
+    REQUIRE(!passes.empty());
+    CHECK_FALSE(has(passes, "postfx.fxaa"));  // off by default: TAA anti-aliases (docs/temporal.md)
+    CHECK(passes.back() == "postfx.tonemap");
+
+    s.fxaa.enabled = true;  // the low preset's anti-aliasing; on here so the order covers every effect
+    bench.chainRun(image, 32, 18, s);
+    passes = postfxPasses(bench.executed);
     REQUIRE(!passes.empty());
     CHECK(passes.front() == "postfx.bloom.down1");
     CHECK(passes.back() == "postfx.fxaa");
@@ -405,19 +405,8 @@ std::vector<float> runSsao(const Gbuffer& g, const ViewParams& view, const SsaoS
     scene.depth = graph.importTexture("depth", {g.w, g.h, PixelFormat::Depth32F}, depth.id());
     scene.normal = graph.importTexture("normal", {g.w, g.h, PixelFormat::RGBA16F}, normal.id());
     TextureHandle ao = addSsaoPasses(graph, rc, scene, s);
-    struct Data {
-        TextureHandle t;
-    };
     std::vector<float> out;
-    graph.addPass<Data>("test.readback",
-        [&](PassBuilder& b, Data& d) {
-            d.t = b.read(ao);
-            b.sideEffect();
-        },
-        [&out, &g](const Data& d, PassContext& ctx) {
-            out.resize(std::size_t(g.w) * std::size_t(g.h) * 4);
-            glGetTextureImage(ctx.texture(d.t), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
-        });
+    test::addReadback(graph, ao, out);
     graph.compile();
     graph.execute(pool, nullptr);
     pool.clear();
@@ -617,6 +606,7 @@ TEST_CASE("gl: autofocus moves smoothly at its rate, independent of the frame ra
     };
     const std::vector<float> image = uniform(w, h, 0.5f);
     const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
+        bench.sky = s.sky;
         runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
             return bench.chain.addPasses(g, rc, in, s, dh);
         });
@@ -676,6 +666,7 @@ TEST_CASE("gl: depth of field: sharp where in focus, the foreground bleeds over 
         for (int x = 0; x < w; ++x) setPixel(image, w, x, y, float((x * 7 + y * 3) % 11) / 10.0f);  // texture
     const auto run = [&](const std::vector<float>& rgba, const std::vector<float>& distances) {
         Bench bench;
+        bench.sky = s.sky;
         return runWithDepth(bench, rgba, depthFromDistances(distances), w, h, 0.0,
             [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle dh) {
                 s.postfx.order = {PostEffect::Dof};
@@ -776,6 +767,7 @@ TEST_CASE("gl: motion blur: a still camera leaves the image, a moving one blurs 
     const auto frames = [&](const std::vector<float>& rgba, double dx_m, double dt) {
         Bench bench;
         bench.camera = ViewParams{{1.0e6, 10.0, 0.0}, 0.0, 0.0, 60.0, 0.1, w, h};
+        bench.sky = s.sky;
         const auto add = [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
             return bench.chain.addPasses(g, rc, in, s, d);
         };
@@ -872,6 +864,7 @@ TEST_CASE("gl: lens flare: none for a sun off screen or below the horizon, visib
     };
     const auto frame = [&](Bench& bench, const std::vector<float>& depth, double t) {
         bench.camera = camera;
+        bench.sky = s.sky;
         return runWithDepth(bench, image, depth, w, h, t, [&](FrameGraph& g, const RenderContext& rc, TextureHandle in, TextureHandle d) {
             return bench.chain.addPasses(g, rc, in, s, d);
         });

@@ -1,12 +1,21 @@
-// The FrameRenderer a GL test file renders with, on the shared OSMesa context (gl_fixture.h).
+// The FrameRenderer a GL test file renders with, on the shared OSMesa context (gl_fixture.h),
+// and the frame helpers the feature tests share: render one frame and read back its image and
+// GPU counters; give the renderer a terrain made from a height function.
 // Internal linkage: every test file that includes this has its own renderer, made on first use.
 #pragma once
 
 #include "app/frame.h"
 #include "app/scene.h"
 #include "gl_fixture.h"
+#include "renderer/half.h"
+#include "terrain/heightmap.h"
+#include "terrain/terrain.h"
 
+#include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vista::test {
 namespace {
@@ -27,6 +36,50 @@ namespace {
     }();
     (void)compiled;
     return r;
+}
+
+// One rendered frame: its report, the image as RGBA floats (top row first: the linear HDR target,
+// or with ldr the displayed sRGB image in [0, 1]) and the GPU counters it wrote, summed by name.
+struct RenderedFrame {
+    FrameReport report;
+    std::vector<float> rgba;
+    std::map<std::string, std::uint64_t> counters;
+
+    std::uint64_t counter(const std::string& name) const {
+        auto it = counters.find(name);
+        return it == counters.end() ? 0 : it->second;
+    }
+};
+
+// Renders s from view at time t. request says which GPU counters to count; its capture fields
+// are set here.
+[[maybe_unused]] RenderedFrame renderFrame(FrameRenderer& r, const Settings& s, const ViewParams& view, double t = 0.0,
+                                           FrameRequest request = {}, bool ldr = false) {
+    r.counters().collect(true);  // drop what earlier frames left
+    std::vector<std::uint16_t> half;
+    std::vector<unsigned char> bytes;
+    if (ldr)
+        request.capture_ldr = &bytes;
+    else
+        request.capture_hdr = &half;
+    RenderedFrame out;
+    out.report = r.render(s, view, t, request);
+    for (const auto& c : r.counters().collect(true)) out.counters[c.name] += c.value;
+    out.rgba.resize(ldr ? bytes.size() : half.size());
+    for (std::size_t i = 0; i < out.rgba.size(); ++i) out.rgba[i] = ldr ? float(bytes[i]) / 255.0f : halfToFloat(half[i]);
+    return out;
+}
+
+// Gives r a terrain of n x n samples, height(x, z) in [0, 1], laid out by terrain's settings.
+template <class Height>
+void adoptTerrain(FrameRenderer& r, const TerrainSettings& terrain, int n, Height&& height) {
+    Heightmap map{n, n, std::vector<float>(std::size_t(n) * std::size_t(n))};
+    for (int z = 0; z < n; ++z)
+        for (int x = 0; x < n; ++x) map.samples[std::size_t(z) * std::size_t(n) + std::size_t(x)] = height(x, z);
+    InputErrors errors;
+    auto made = Terrain::create(std::move(map), terrain, r.shaders(), errors);
+    REQUIRE(made);
+    r.adoptTerrain(std::move(made));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The vista executable against hostile options and outputs (issue 19): numbers that wrap or
 // are NaN, outputs that exist or are inputs, check finding what capture finds, `-c` layering.
+#include "cli_runner.h"
 #include "gl_fixture.h"
 
 #include <array>
@@ -11,27 +12,10 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string output;  // stdout and stderr
-};
-
-// Runs a shell command line, collecting its output and exit code.
-Run shell(const std::string& line) {
-    std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + line + " 2>&1";
-    Run r{-1, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-Run run(const std::string& args) { return shell(std::string(VISTA_EXECUTABLE) + " " + args); }
-
-bool has(const Run& r, const std::string& text) { return r.output.find(text) != std::string::npos; }
+using vista::test::has;
+using vista::test::Run;
+using vista::test::shell;
+Run run(const std::string& args) { return vista::test::runVista(args); }
 
 }  // namespace
 

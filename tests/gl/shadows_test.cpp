@@ -78,6 +78,7 @@ Frame render(const Settings& s, const ViewParams& view) {
     FrameRequest request;
     request.capture_hdr = &f.hdr;
     request.count_nonfinite = true;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     f.report = r.render(s, view, 0.0, request);
     for (const auto& c : r.counters().collect(true)) f.nonfinite += c.value;
     return f;
@@ -159,6 +160,7 @@ TEST_CASE("shadows GL: the debug views (cascade colours, shadow map) and grazing
     std::vector<std::uint8_t> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;
+    renderer().resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     FrameReport report = renderer().render(s, kAbove, 0.0, request);
     CHECK(has(report.executed, "shadows.view"));
     CHECK(has(report.executed, "shadows.cascade"));
@@ -268,6 +270,7 @@ TEST_CASE("spot shadows GL: a full atlas leaves the smallest lights unshadowed a
     std::vector<std::uint8_t> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;
+    renderer().resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     FrameReport report = renderer().render(s, kAbove, 0.0, request);
     CHECK(has(report.executed, "shadows.spot_view"));
     CHECK(has(report.executed, "shadows.spot_atlas"));

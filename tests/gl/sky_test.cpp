@@ -49,6 +49,7 @@ Rendered render(const Settings& s, const ViewParams& view) {
     FrameRequest request;
     request.capture_hdr = &out.hdr;
     request.count_nonfinite = true;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     out.pre_exposure = r.render(s, view, 0.0, request).counters.at("sky.pre_exposure");
     for (const auto& c : r.counters().collect(true)) out.nonfinite += c.value;
     return out;
@@ -272,6 +273,7 @@ TEST_CASE("gl: height fog thickens the haze, reaches the sky view, and aerial pe
     std::vector<std::uint16_t> hdr;
     FrameRequest request;
     request.capture_hdr = &hdr;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     FrameReport clear = r.render(s, v, 0.0, request);
     auto has = [](const FrameReport& rep, const char* pass) {
         return std::find(rep.executed.begin(), rep.executed.end(), pass) != rep.executed.end();
@@ -301,6 +303,7 @@ TEST_CASE("gl: height fog thickens the haze, reaches the sky view, and aerial pe
     CHECK(pixel(fog.hdr, x, 2) != pixel(clear_hdr, x, 2));  // the sky view sees the fog too
 
     s.sky.aerial_perspective = false;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     FrameReport off = r.render(s, v, 0.0, request);
     CHECK_FALSE(has(off, "sky.aerial_volume"));
     CHECK_FALSE(has(off, "sky.aerial"));

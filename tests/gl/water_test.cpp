@@ -69,6 +69,7 @@ Frame render(const Settings& s, const ViewParams& view, double t) {
     FrameRequest request;
     request.capture_hdr = &f.hdr;
     request.count_nonfinite = true;
+    r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
     f.report = r.render(s, view, t, request);
     for (const auto& c : r.counters().collect(true))
         if (c.name == "nonfinite_pixels") f.nonfinite += c.value;

@@ -41,6 +41,9 @@ Settings weatherScene(const std::filesystem::path& map, const glm::dvec3& origin
     s.clouds.enabled = false;
     s.debug.grid = false;
     s.lights.enabled = false;
+    // No TAA jitter or history, as the image checks expect; not resetHistory() per frame, which
+    // would also forget weather's previous camera (the streak velocity the tests check).
+    s.taa.enabled = false;
     s.weather.enabled = true;
     s.weather.intensity = 1.0f;
     return s;
@@ -55,28 +58,16 @@ struct Frame {
 Frame render(const Settings& s, const ViewParams& view, double t, bool ldr = false) {
     FrameRenderer& r = renderer();
     REQUIRE(r.prepare(s).empty());
-    r.counters().collect(true);
-    std::vector<std::uint16_t> half;
-    std::vector<unsigned char> bytes;
     FrameRequest request;
-    if (ldr)
-        request.capture_ldr = &bytes;
-    else
-        request.capture_hdr = &half;
-    request.count_nonfinite = true;
     request.count_weather = true;
-    Frame f;
-    f.report = r.render(s, view, t, request);
-    for (const auto& c : r.counters().collect(true)) {
-        if (c.name == "weather.drops") f.drops = c.value;
-        else if (c.name == "weather.splashes") f.splashes = c.value;
-        else if (c.name == "nonfinite_pixels") f.nonfinite = c.value;
-    }
-    const std::size_t n = ldr ? bytes.size() / 4 : half.size() / 4;
+    request.count_nonfinite = true;
+    test::RenderedFrame rendered = test::renderFrame(r, s, view, t, request, ldr);
+    Frame f{std::move(rendered.report), {}, rendered.counter("weather.drops"), rendered.counter("weather.splashes"),
+            rendered.counter("nonfinite_pixels")};
+    const std::size_t n = rendered.rgba.size() / 4;
     f.hdr.resize(n * 3);
     for (std::size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c)
-            f.hdr[i * 3 + std::size_t(c)] = ldr ? float(bytes[i * 4 + std::size_t(c)]) / 255.0f : halfToFloat(half[i * 4 + std::size_t(c)]);
+        for (int c = 0; c < 3; ++c) f.hdr[i * 3 + std::size_t(c)] = rendered.rgba[i * 4 + std::size_t(c)];
     return f;
 }
 
@@ -248,21 +239,8 @@ TEST_CASE("gl: splashes land on the ground and rain darkens the terrain") {
 
 TEST_CASE("gl: rainRippleNormal on the GPU matches the double-precision CPU mirror") {
     FrameRenderer& r = renderer();
-    auto* program = r.shaders().get("tests/gl/shaders/rain_ripples_probe.glsl");
-    REQUIRE(program);
     const int w = 96, h = 64;
-    gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "probe");
-    gl::Framebuffer fb = gl::createFramebuffer("probe");
-    glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    gl::VertexArray vao = gl::createVertexArray("probe");
-    glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
-    glViewport(0, 0, w, h);
-    glUseProgram(program->id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> texels(std::size_t(w) * std::size_t(h) * 4);
-    glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 4), texels.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const std::vector<float> texels = test::drawProbe(r.shaders(), "tests/gl/shaders/rain_ripples_probe.glsl", w, h);
     double worst = 0.0, tilted = 0.0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

@@ -30,7 +30,13 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kSpotShadowUniforms == BINDING_SPOT_SHADOW_UNIFORMS);
     CHECK(binding::kSpotShadowMap == BINDING_SPOT_SHADOW_MAP);
     CHECK(binding::kSpotShadowDepth == BINDING_SPOT_SHADOW_DEPTH);
+    CHECK(binding::kBlueNoise == BINDING_BLUE_NOISE);
     CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
     CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);
     CHECK(binding::kWeatherCells == BINDING_WEATHER_CELLS);
+    CHECK(binding::kObjectInstances == BINDING_OBJECT_INSTANCES);
+    CHECK(binding::kObjectVisible == BINDING_OBJECT_VISIBLE);
+    CHECK(binding::kObjectCounts == BINDING_OBJECT_COUNTS);
+    CHECK(binding::kObjectDraws == BINDING_OBJECT_DRAWS);
+    CHECK(binding::kObjectModels == BINDING_OBJECT_MODELS);
 }

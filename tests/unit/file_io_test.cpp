@@ -1,6 +1,7 @@
 // Fault injection for every writer and the input checks (config/file_io.h): a full disk
 // (RLIMIT_FSIZE in a child process, SIGXFSZ ignored by the writer), two writers of one file,
 // SIGTERM during a write, special files as inputs.
+#include "../temp_dir.h"
 #include "app/image_writer.h"
 #include "app/quality_report.h"
 #include "config/file_io.h"
@@ -25,15 +26,7 @@ using namespace vista;
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("vista-fileio-" + name + "-" + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 std::vector<std::string> listing(const fs::path& dir) {
     std::vector<std::string> names;

@@ -1,5 +1,6 @@
 // Heightmap loading (formats, validation errors), bilinear sampling, the island generator
 // and gen-heightmap. Test images are written with OpenImageIO into a per-test temp folder.
+#include "../temp_dir.h"
 #include "terrain/gen_heightmap.h"
 #include "terrain/heightmap.h"
 
@@ -20,16 +21,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // ctest runs test cases as parallel processes: the folder name includes the pid.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name)
-        : path(fs::temp_directory_path() / ("vista-heightmap-" + name + "-" + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    fs::path operator/(const std::string& file) const { return path / file; }
-};
+using test::TempDir;
 
 // Alpha, if any, is written as stored (PNG keeps unassociated alpha; OIIO would otherwise
 // divide RGB by it).

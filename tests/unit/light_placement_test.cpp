@@ -81,10 +81,12 @@ TEST_CASE("light placement: check warns about lights under water or inside the t
 TEST_CASE("light placement: the default scene's lamps stand above the sea and check finds no misplaced light") {
     Settings s;
     REQUIRE(loadScene(defaultScenePath(), {}, s).empty());
-    Heightmap map;
-    REQUIRE(validateSceneInputs(s, &map).empty());
-    REQUIRE(!map.samples.empty());
-    const GroundHeight terrain = [&map, &t = s.terrain](double x, double z) { return terrainHeightAt(map, t, x, z); };
+    CheckedTerrain checked;
+    REQUIRE(validateSceneInputs(s, &checked).empty());
+    REQUIRE(!checked.map.samples.empty());
+    const GroundHeight terrain = [&checked, origin = s.terrain.origin](double x, double z) {
+        return terrainHeightAt(checked.map, checked.mapping, origin, x, z);
+    };
     CHECK(checkLightPlacement(s, terrain, {defaultScenePath()}, {}).empty());
     // The shore path runs along the waterline: some of its 40 lamps are over the sea, and
     // every one stands its 2.5 m above the water or the land.

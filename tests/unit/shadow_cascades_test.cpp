@@ -5,6 +5,7 @@
 #include "renderer/shadows/cascades.h"
 #include "renderer/shadows/sun_shadows.h"
 #include "terrain/cdlod.h"
+#include "terrain_helpers.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -189,20 +190,12 @@ TEST_CASE("shadows: caster planes keep a point above the box (towards the sun) a
 
 TEST_CASE("shadows: selecting with the caster frustum and culling by the view gives the view's own selection") {
     // A bumpy 257x257 map, random views and suns: same nodes, same levels.
-    const int n = 257;
-    Heightmap map{n, n, std::vector<float>(std::size_t(n) * n)};
-    for (int z = 0; z < n; ++z)
-        for (int x = 0; x < n; ++x)
-            map.samples[std::size_t(z * n + x)] = float(0.5 + 0.25 * std::sin(x * 0.11) * std::cos(z * 0.07));
-    TerrainMapping mapping{4096.0, 600.0, 0.0, n, n};
-    MinMaxQuadtree tree(map, mapping, 16);
-    LodSettings lod;
-    lod.base_range_m = 100.0;
+    const test::BumpyQuadtree terrain(0.11, 0.07);
+    const auto& [mapping, tree, lod] = terrain;
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < 40; ++k) {
-        ViewParams v{{(u(rng) - 0.5) * 4000, 300 + u(rng) * 500, (u(rng) - 0.5) * 4000}, u(rng) * 360, -5 - u(rng) * 40,
-                     60.0, 0.1, 320, 180};
+        const ViewParams v = test::randomView(rng, 4000, 300, 500);
         glm::dmat4 vp(viewMatrices(v).view_proj);
         Frustum view = frustumFromViewProj(vp);
         Selection own, wide, culled;

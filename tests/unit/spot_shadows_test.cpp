@@ -8,6 +8,7 @@
 #include "renderer/camera.h"
 #include "renderer/shadows/spot_shadows.h"
 #include "terrain/cdlod.h"
+#include "terrain_helpers.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -179,20 +180,12 @@ TEST_CASE("spot shadows: `shadow on|off` in a light entry, round trip and errors
 }
 
 TEST_CASE("spot shadows: a selection widened by spot views keeps the view's own nodes and covers the spots") {
-    const int n = 257;
-    Heightmap map{n, n, std::vector<float>(std::size_t(n) * n)};
-    for (int z = 0; z < n; ++z)
-        for (int x = 0; x < n; ++x)
-            map.samples[std::size_t(z * n + x)] = float(0.5 + 0.25 * std::sin(x * 0.13) * std::cos(z * 0.05));
-    TerrainMapping mapping{4096.0, 600.0, 0.0, n, n};
-    MinMaxQuadtree tree(map, mapping, 16);
-    LodSettings lod;
-    lod.base_range_m = 100.0;
+    const test::BumpyQuadtree terrain(0.13, 0.05);
+    const auto& [mapping, tree, lod] = terrain;
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < 30; ++k) {
-        ViewParams v{{(u(rng) - 0.5) * 3000, 350 + u(rng) * 300, (u(rng) - 0.5) * 3000}, u(rng) * 360, -5 - u(rng) * 40,
-                     60.0, 0.1, 320, 180};
+        const ViewParams v = test::randomView(rng, 3000, 350, 300);
         const Frustum view = frustumFromViewProj(glm::dmat4(viewMatrices(v).view_proj));
         // Two street lights, one of them behind the camera (outside the view).
         std::vector<Frustum> spots;

@@ -8,7 +8,11 @@
 // perspective by the atmosphere's transmittance from the camera to the clouds: the sky already
 // in the image stands for the haze in front of them. Output: premultiplied radiance and
 // coverage, blended as hdr = rgb + hdr * (1 - a); with HALF_RES into a half-size target that
-// clouds_composite.glsl blends over the image.
+// clouds_composite.glsl blends over the image. With TEMPORAL (half or full size) into a target
+// of its own, plus the clouds' mean distance (attachment 1) along which clouds_temporal.glsl
+// reprojects the history. The start offset is spatiotemporal blue noise, so the error of one
+// frame is fine-grained and a pixel's offsets over frames are evenly spread (accumulated by
+// "clouds.temporal").
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -18,20 +22,17 @@
 #define SKY_TRANSMITTANCE_LUT
 #include "../../shaders/atmosphere.glsl"
 #include "clouds_common.glsl"
+#include "../../../renderer/shaders/blue_noise.glsl"
 layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
+#ifdef TEMPORAL
+layout(location = 1) out float o_distance;  // m, the clouds' mean distance along the ray (0: none)
+#endif
 
 float hgPhase(float c, float g) {
     float denom = max(1.0 + g * g - 2.0 * g * c, 1e-6);
     return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));
-}
-
-// A per-pixel random start offset: the march's banding becomes fine grain.
-float pixelJitter(vec2 p) {
-    vec3 p3 = fract(vec3(p.xyx) * 0.1031);
-    p3 += dot(p3, p3.yzx + 33.33);
-    return fract((p3.x + p3.y) * p3.z);
 }
 
 // Transmittance of the atmosphere between the camera (radius r km, cosine mu) and a point d km
@@ -94,7 +95,7 @@ void main() {
     float nu = dot(dir, sun);
     float g = c_planet.w;
     float phase = mix(hgPhase(nu, g), hgPhase(nu, -0.3), 0.25);
-    float jitter = pixelJitter(gl_FragCoord.xy);
+    float jitter = blueNoise(ivec2(gl_FragCoord.xy), uint(u_time.z), 0);
     float fade_start = 0.6 * c_planet.z;
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0, weight = 0.0, t_weighted = 0.0;
@@ -142,5 +143,8 @@ void main() {
     vec3 aerial = viewTransmittance(a_radii.z, mu, t_mean * 1e-3);
     float aerial_mean = dot(aerial, vec3(1.0 / 3.0));
     o_color = vec4(clamp(radiance * aerial, vec3(0.0), vec3(60000.0)), alpha * aerial_mean);
+#ifdef TEMPORAL
+    o_distance = t_mean;
+#endif
 }
 #endif

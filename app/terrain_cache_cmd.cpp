@@ -1,0 +1,72 @@
+// `vista terrain-cache`: load the input as a DEM (GDAL) or, when it has no georeferencing, as a
+// heightmap image; check any cache already there against the input's key; build when needed.
+#include "app/terrain_cache_cmd.h"
+
+#include "app/progress.h"
+#include "terrain/dem.h"
+#include "terrain/tile_cache.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace vista {
+namespace {
+
+int fail(const std::string& why, int code) {
+    std::fprintf(stderr, "vista: %s\n", why.c_str());
+    return code;
+}
+
+}  // namespace
+
+int runTerrainCache(const TerrainCacheOptions& o) {
+    if (o.tile < 2 || o.tile > 4096) return fail("--tile " + std::to_string(o.tile) + " is out of range; accepted: 2..4096", 2);
+    const std::filesystem::path out = o.out.empty() ? defaultTileCachePath(o.input) : o.out;
+    TileCacheKey key;
+    if (std::string why = tileCacheKey(o.input, key); !why.empty()) return fail(why, 2);
+
+    std::string why;
+    if (auto cache = TileCache::open(out, why)) {
+        if (cache->key() == key && cache->tileSize() == o.tile && !o.force) {
+            std::printf("%s is up to date (%zu levels)\n", out.string().c_str(), cache->levels().size());
+            return 0;
+        }
+        if (!(cache->key() == key)) std::fprintf(stderr, "vista: %s was built from another version of %s: rebuilding\n",
+                                                out.string().c_str(), o.input.string().c_str());
+    } else if (std::filesystem::exists(out)) {
+        std::fprintf(stderr, "vista: %s: rebuilding\n", why.c_str());
+    }
+
+    // A DEM when GDAL finds georeferencing; a plain image goes through OpenImageIO instead.
+    InputErrors errors;
+    Dem dem = loadDem(o.input, DemNodata::Fill, 1.0, errors);
+    Heightmap map;
+    TerrainMapping mapping;
+    if (!dem.map.samples.empty()) {
+        mapping = demMapping(dem.info, dem.map.width, dem.map.height);
+        map = std::move(dem.map);
+    } else if (errors.size() == 1 && errors[0].message.find("no geotransform") != std::string::npos) {
+        errors.clear();
+        map = loadHeightmap(o.input, 0, 0, errors);
+        mapping = TerrainMapping{o.size_m, o.height_scale_m, o.height_offset_m, map.width, map.height};
+    }
+    if (map.samples.empty()) {
+        for (const auto& e : errors) std::fprintf(stderr, "vista: %s\n", e.str().c_str());
+        return 2;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    int total = 0;
+    for (const auto& l : tileCacheLevels(map.width, map.height, o.tile)) total += l.tiles_x * l.tiles_z;
+    Progress progress(total, "terrain-cache");
+    why = buildTileCache(map, mapping, key, o.tile, out, true, [&](int done, int) {
+        if (o.progress) progress.update(done);
+    });
+    if (o.progress) progress.finish();
+    if (!why.empty()) return fail(why, 1);
+    std::printf("wrote %s: %dx%d samples, %d tiles of %d, %.1f MB, in %.2f s\n", out.string().c_str(), map.width, map.height,
+                total, o.tile, double(std::filesystem::file_size(out)) / 1e6,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return 0;
+}
+
+}  // namespace vista

@@ -1,0 +1,379 @@
+// Objects: loading, placement, upload and the cull, G-buffer and shadow draws (see objects.h).
+#include "renderer/meshes/objects.h"
+
+#include "renderer/bindings.h"
+#include "renderer/gl_device.h"
+#include "renderer/meshes/gltf_loader.h"
+#include "renderer/meshes/mesh_lod.h"
+#include "terrain/cdlod.h"
+
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+namespace vista {
+namespace {
+
+struct GpuInstance {
+    glm::vec4 position_yaw;
+    glm::vec4 params;
+};
+static_assert(sizeof(GpuInstance) == kObjectInstanceBytes);
+struct GpuModel {
+    glm::vec4 sphere;
+    glm::uvec4 region;
+    glm::uvec4 triangles;
+};
+struct DrawCommand {
+    std::uint32_t count, instance_count, first_index;
+    std::int32_t base_vertex;
+    std::uint32_t base_instance;  // the group (object_cull.glsl FIXUP_DRAWS reads it)
+};
+
+// Grid cells of the two simplified LODs along the model's longest side.
+const std::vector<int> kLodCells = {10, 4};
+constexpr int kShadowLod = 1;
+
+bool sameLists(const ObjectsSettings& a, const ObjectsSettings& b) { return a.objects == b.objects && a.scatters == b.scatters; }
+
+gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, GLenum format, const char* name) {
+    gl::Texture t = gl::Texture::create2D(1, 1, format, 1, name);
+    const std::uint8_t px[4] = {r, g, b, 255};
+    glTextureSubImage2D(t.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    return t;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
+    return {{"renderer/meshes/shaders/object_cull.glsl", {}},
+            {"renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"}},
+            {"renderer/meshes/shaders/object.glsl", {}},
+            {"renderer/meshes/shaders/object.glsl", {"ALPHA_MASK"}},
+            {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS"}},
+            {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS", "ALPHA_MASK"}}};
+}
+
+bool Objects::prepare(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area,
+                      const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors) {
+    emissive_nits_ = s.emissive_nits;
+    if (has_placement_ && sameLists(s, placed_for_)) return stats_.instances > 0;
+    const auto start = std::chrono::steady_clock::now();
+    has_placement_ = true;
+    placed_for_ = s;
+    files_.clear();
+    models_.clear();
+    placed_.clear();
+    std::map<std::string, int> index;  // resolved file -> model
+    auto model = [&](const std::string& file, const std::string& entry) -> int {
+        const std::string path = resolve(file).string();
+        auto it = index.find(path);
+        if (it != index.end()) return it->second;
+        Model m;
+        if (std::string why = loadGltf(path, m); !why.empty()) {
+            errors.push_back({"[objects] " + entry, 0, why});
+            index[path] = -1;
+            return -1;
+        }
+        buildLods(m, kLodCells);
+        models_.push_back(std::move(m));
+        placed_.emplace_back();
+        files_.push_back(path);
+        return index[path] = int(models_.size()) - 1;
+    };
+    for (const NamedObject& o : s.objects) {
+        const int m = model(o.object.file, "object." + o.name);
+        if (m < 0) continue;
+        PlacedObject p;
+        p.position = o.object.position;
+        if (o.object.ground_m >= 0.0f) {
+            const GroundSample g = ground ? ground(p.position.x, p.position.z) : GroundSample{};
+            p.position.y = (g.valid ? g.height_m : 0.0) + o.object.ground_m;
+        }
+        p.yaw_rad = float(glm::radians(double(o.object.yaw_deg)));
+        p.scale = o.object.scale;
+        placed_[std::size_t(m)].push_back(p);
+    }
+    for (const NamedScatter& sc : s.scatters) {
+        std::vector<int> ms;
+        for (const std::string& f : sc.rule.files) ms.push_back(model(f, "scatter." + sc.name));
+        if (!ground || area.max.x <= area.min.x) continue;  // scatter needs a terrain
+        const glm::ivec2 lo = scatterCellOf(sc.rule, area.min), hi = scatterCellOf(sc.rule, area.max);
+        for (const PlacedObject& p : scatterRegion(sc.rule, lo, hi, ground)) {
+            const int m = ms[std::size_t(p.file)];
+            if (m >= 0) placed_[std::size_t(m)].push_back(p);
+        }
+    }
+    upload(s.emissive_nits);
+    stats_.place_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats_.instances > 0;
+}
+
+void Objects::upload(float) {
+    stats_ = ObjectStats{};
+    draws_list_.clear();
+    textures_.clear();
+    image_textures_.clear();
+    image_linear_.clear();
+    vertices_ = {};
+    indices_ = {};
+    instances_ = {};
+    models_buffer_ = {};
+    visible_ = {};
+    counts_ = {};
+    draws_ = {};
+    vao_ = {};
+    instance_count_ = 0;
+    for (const auto& p : placed_) instance_count_ += p.size();
+    stats_.models = models_.size();
+    stats_.instances = instance_count_;
+    if (instance_count_ == 0) return;
+
+    // One vertex and index array for every model (offsets applied per draw).
+    std::vector<MeshVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> vertex_base, index_base;
+    for (const Model& m : models_) {
+        vertex_base.push_back(std::uint32_t(vertices.size()));
+        index_base.push_back(std::uint32_t(indices.size()));
+        vertices.insert(vertices.end(), m.vertices.begin(), m.vertices.end());
+        indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+        stats_.triangles += m.lods[0].triangles();
+    }
+    // The anchor: instances are stored relative to it in floats (camera-relative in the shaders).
+    glm::dvec3 sum(0.0);
+    for (const auto& list : placed_)
+        for (const PlacedObject& p : list) sum += p.position;
+    anchor_ = glm::floor(sum / double(instance_count_));
+
+    std::vector<GpuInstance> instances;
+    std::vector<GpuModel> gpu_models;
+    instances.reserve(instance_count_);
+    std::uint32_t slot = 0;
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const Model& model = models_[m];
+        const glm::vec3 centre = 0.5f * (model.bounds_min + model.bounds_max);
+        float radius = 0.0f;
+        for (const MeshVertex& v : model.vertices) radius = std::max(radius, glm::length(v.position - centre));
+        GpuModel g{glm::vec4(centre, radius), glm::uvec4(0), glm::uvec4(0)};
+        const std::uint32_t n = std::uint32_t(placed_[m].size());
+        for (int k = 0; k < 4; ++k) {
+            g.region[k] = slot;
+            slot += n;
+            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
+            g.triangles[k] = std::uint32_t(model.lods[std::size_t(lod)].triangles());
+        }
+        gpu_models.push_back(g);
+        for (const PlacedObject& p : placed_[m])
+            instances.push_back({glm::vec4(glm::vec3(p.position - anchor_), p.yaw_rad),
+                                 glm::vec4(p.scale, float(m), radius * p.scale, 0.0f)});
+    }
+    group_count_ = models_.size() * 4;
+
+    // Indirect commands: per model, per group k (LOD 0..2, shadow), per primitive.
+    std::vector<DrawCommand> commands;
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const Model& model = models_[m];
+        for (int k = 0; k < 4; ++k) {
+            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
+            for (const ModelPrimitive& p : model.lods[std::size_t(lod)].primitives) {
+                Draw d;
+                d.model = int(m);
+                d.group = int(m) * 4 + k;
+                d.material = p.material;
+                d.region = gpu_models[m].region[k];
+                d.offset = commands.size() * sizeof(DrawCommand);
+                d.shadow = k == 3;
+                draws_list_.push_back(d);
+                commands.push_back({p.index_count, 0, index_base[m] + p.first_index, std::int32_t(vertex_base[m]),
+                                    std::uint32_t(d.group)});
+            }
+        }
+    }
+
+    vertices_ = gl::Buffer::create(GLsizeiptr(vertices.size() * sizeof(MeshVertex)), vertices.data(), 0, "objects vertices");
+    indices_ = gl::Buffer::create(GLsizeiptr(indices.size() * 4), indices.data(), 0, "objects indices");
+    instances_ = gl::Buffer::create(GLsizeiptr(instances.size() * sizeof(GpuInstance)), instances.data(), 0, "objects instances");
+    models_buffer_ = gl::Buffer::create(GLsizeiptr(gpu_models.size() * sizeof(GpuModel)), gpu_models.data(), 0, "objects models");
+    visible_ = gl::Buffer::create(GLsizeiptr(std::max<std::uint32_t>(slot, 1) * 4), nullptr, 0, "objects visible lists");
+    counts_ = gl::Buffer::create(GLsizeiptr(group_count_ * 4), nullptr, GL_DYNAMIC_STORAGE_BIT, "objects group counts");
+    draws_ = gl::Buffer::create(GLsizeiptr(commands.size() * sizeof(DrawCommand)), commands.data(), 0, "objects draws");
+    vao_ = gl::createVertexArray("objects");
+    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(MeshVertex));
+    glVertexArrayElementBuffer(vao_.id(), indices_.id());
+    const GLuint offsets[4] = {offsetof(MeshVertex, position), offsetof(MeshVertex, normal), offsetof(MeshVertex, tangent),
+                               offsetof(MeshVertex, uv)};
+    const GLint sizes[4] = {3, 3, 4, 2};
+    for (GLuint a = 0; a < 4; ++a) {
+        glEnableVertexArrayAttrib(vao_.id(), a);
+        glVertexArrayAttribFormat(vao_.id(), a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao_.id(), a, 0);
+    }
+
+    // Textures: colour slots (base colour, emissive) in sRGB, data slots linear; made on first use.
+    white_ = solidTexture(255, 255, 255, GL_SRGB8_ALPHA8, "objects white");
+    flat_normal_ = solidTexture(128, 128, 255, GL_RGBA8, "objects flat normal");
+    sampler_ = gl::createSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, "objects sampler");
+    std::size_t texture_bytes = 0;
+    for (const Model& model : models_) {
+        image_textures_.emplace_back(model.images.size(), -1);
+        image_linear_.emplace_back(model.images.size(), -1);
+        auto make = [&](int image, bool srgb) {
+            if (image < 0) return;
+            int& slot_ref = (srgb ? image_textures_.back() : image_linear_.back())[std::size_t(image)];
+            if (slot_ref >= 0) return;
+            const ModelImage& im = model.images[std::size_t(image)];
+            const int levels = 1 + int(std::floor(std::log2(double(std::max(im.width, im.height)))));
+            gl::Texture t = gl::Texture::create2D(im.width, im.height, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, levels, "objects texture");
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTextureSubImage2D(t.id(), 0, 0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, im.rgba.data());
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            glGenerateTextureMipmap(t.id());
+            texture_bytes += t.bytes();
+            textures_.push_back(std::move(t));
+            slot_ref = int(textures_.size()) - 1;
+        };
+        for (const ModelMaterial& mat : model.materials) {
+            make(mat.base_color_texture, true);
+            make(mat.emissive_texture, true);
+            make(mat.metallic_roughness_texture, false);
+            make(mat.normal_texture, false);
+            make(mat.occlusion_texture, false);
+        }
+    }
+    stats_.memory_bytes = std::size_t(vertices_.size() + indices_.size() + instances_.size() + models_buffer_.size() +
+                                      visible_.size() + counts_.size() + draws_.size()) +
+                          texture_bytes + white_.bytes() + flat_normal_.bytes();
+}
+
+BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s,
+                                  CounterReadback& counters, bool count, BufferHandle after) {
+    const BufferHandle imported = graph.importBuffer("objects.lists", BufferDesc{std::size_t(visible_.size())}, visible_.id());
+    struct Data {
+        BufferHandle lists;
+    };
+    const Data& d = graph.addPass<Data>("objects.cull",
+        [&](PassBuilder& b, Data& data) {
+            if (after.valid()) b.read(after);
+            data.lists = b.write(imported);
+        },
+        [this, &rc, &s, &counters, count](const Data&, PassContext&) {
+            const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
+            const Frustum planes = frustumFromViewProj(glm::dmat4(rc.matrices.view_proj));
+            glClearNamedBufferData(counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+            GLuint program = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl")->id();
+            glUseProgram(program);
+            glProgramUniform1ui(program, 0, GLuint(instance_count_));
+            glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+            glProgramUniform4f(program, 2, s.lod1_distance_m, s.lod2_distance_m, s.max_distance_m,
+                               s.cast_shadows ? s.shadow_distance_m : -1.0f);
+            glProgramUniform1ui(program, 3, count ? 1u : 0u);
+            for (int p = 0; p < 5; ++p)
+                glProgramUniform4f(program, 4 + p, float(planes[std::size_t(p)].x), float(planes[std::size_t(p)].y),
+                                   float(planes[std::size_t(p)].z), float(planes[std::size_t(p)].w));
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectModels, models_buffer_.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectCounts, counts_.id());
+            if (count) {
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "objects.instances"));
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "objects.triangles"));
+            }
+            const std::uint64_t groups = (instance_count_ + 63) / 64;
+            const std::uint64_t gx = std::min<std::uint64_t>(groups, 65535), gy = (groups + gx - 1) / gx;
+            glDispatchCompute(GLuint(gx), GLuint(gy), 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+            GLuint fixup = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"})->id();
+            glUseProgram(fixup);
+            glProgramUniform1ui(fixup, 0, GLuint(draws_list_.size()));
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectDraws, draws_.id());
+            glDispatchCompute(GLuint((draws_list_.size() + 63) / 64), 1, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        });
+    return d.lists;
+}
+
+void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow) const {
+    const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
+    for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
+    for (const Draw& d : draws_list_) {
+        if (d.shadow != shadow) continue;
+        const Model& model = models_[std::size_t(d.model)];
+        const ModelMaterial& mat = model.materials[std::size_t(d.material)];
+        const bool mask = mat.alpha_mode != AlphaMode::Opaque;  // BLEND drawn masked until a forward pass exists
+        std::vector<std::string> defines;
+        if (shadow) defines.push_back("SHADOW_PASS");
+        if (mask) defines.push_back("ALPHA_MASK");
+        const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+        glUseProgram(program);
+        glProgramUniform1ui(program, 0, d.region);
+        glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+        glProgramUniform4f(program, 2, mat.base_color.r, mat.base_color.g, mat.base_color.b, mat.base_color.a);
+        glProgramUniform4f(program, 3, mat.metallic, mat.roughness, mat.normal_scale, mat.occlusion_strength);
+        const glm::vec3 e = mat.emissive * emissive_nits_;
+        glProgramUniform4f(program, 4, e.r, e.g, e.b, mat.alpha_mode == AlphaMode::Blend ? 0.5f : mat.alpha_cutoff);
+        glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
+        auto tex = [&](int image, bool srgb, GLuint fallback) {
+            if (image < 0) return fallback;
+            const int t = (srgb ? image_textures_ : image_linear_)[std::size_t(d.model)][std::size_t(image)];
+            return t >= 0 ? textures_[std::size_t(t)].id() : fallback;
+        };
+        glBindTextureUnit(binding::kTex0, tex(mat.base_color_texture, true, white_.id()));
+        if (!shadow) {
+            glBindTextureUnit(binding::kTex1, tex(mat.metallic_roughness_texture, false, white_.id()));
+            glBindTextureUnit(binding::kTex2, tex(mat.normal_texture, false, flat_normal_.id()));
+            glBindTextureUnit(binding::kTex3, tex(mat.occlusion_texture, false, white_.id()));
+            glBindTextureUnit(binding::kTex4, tex(mat.emissive_texture, true, white_.id()));
+        }
+        if (mat.double_sided) glDisable(GL_CULL_FACE);
+        else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+        }
+        glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(d.offset));
+    }
+    glDisable(GL_CULL_FACE);
+    for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindVertexArray(rc.empty_vao);
+}
+
+void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const { drawList(rc, matrix, true); }
+
+void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, BufferHandle lists, SceneTargets& targets) {
+    struct DrawData {
+        BufferHandle lists;
+        SceneTargets t;
+    };
+    const DrawData& d = graph.addPass<DrawData>("objects.gbuffer",
+        [&](PassBuilder& b, DrawData& data) {
+            data.lists = b.read(lists);
+            data.t = targets;
+            data.t.hdr = b.write(targets.hdr);
+            data.t.albedo = b.write(targets.albedo);
+            data.t.normal = b.write(targets.normal);
+            data.t.depth = b.write(targets.depth);
+        },
+        [this, &rc](const DrawData& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.t.hdr);
+            GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
+                                              ctx.texture(data.t.depth));
+            bindTarget(fb, desc.width, desc.height);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_TRUE);
+            drawList(rc, rc.matrices.view_proj, false);
+            glDisable(GL_DEPTH_TEST);
+        });
+    targets = d.t;
+}
+
+}  // namespace vista

@@ -1,0 +1,109 @@
+// "objects.gbuffer": instanced glTF meshes into the G-buffer. Instance k of a draw is
+// u_instances[u_visible[u_region + k]] (objects.cull filled the region). Metallic-roughness
+// materials map onto the G-buffer's dielectric encoding: albedo = base x (1 - metallic), F0 from
+// 0.04 toward the encoding's 0.16 with metallic; occlusion darkens the albedo (the G-buffer has
+// no AO channel; SSAO adds the rest). Emissive (x [objects] emissive_nits) goes into the HDR
+// target, which the lighting adds to. Missing textures are 1 x 1 defaults (white, flat normal),
+// so there is no branch per texture. ALPHA_MASK: alpha below the cutoff is discarded (foliage;
+// BLEND materials too, at their cutoff, until the forward pass exists). SHADOW_PASS: depth only
+// into a shadow view (with the alpha test when ALPHA_MASK).
+#include "../../../renderer/shaders/common.glsl"
+#include "../../../renderer/shaders/gbuffer.glsl"
+#include "object_common.glsl"
+
+layout(std430, binding = BINDING_OBJECT_INSTANCES) readonly buffer Instances { ObjectInstance u_instances[]; };
+layout(std430, binding = BINDING_OBJECT_VISIBLE) readonly buffer Visible { uint u_visible[]; };
+
+layout(location = 0) uniform uint u_region;       // first slot of this draw's group
+layout(location = 1) uniform vec3 u_camera;       // camera relative to the anchor (m)
+layout(location = 2) uniform vec4 u_base_color;   // linear RGBA factor
+layout(location = 3) uniform vec4 u_material;     // metallic, roughness, normal scale, occlusion strength
+layout(location = 4) uniform vec4 u_emissive;     // rgb emissive factor x nits, w alpha cutoff
+layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
+
+#ifdef VERTEX_SHADER
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_tangent;
+layout(location = 3) in vec2 a_uv;
+out vec2 v_uv;
+#ifndef SHADOW_PASS
+out vec3 v_normal;
+out vec4 v_tangent;
+out vec3 v_position;  // camera-relative
+#endif
+
+void main() {
+    ObjectInstance inst = u_instances[u_visible[u_region + uint(gl_InstanceID)]];
+    vec3 p = inst.position_yaw.xyz - u_camera + objectTransform(inst, a_position);
+    v_uv = a_uv;
+#ifndef SHADOW_PASS
+    // Uniform scale: the rotation alone turns normals and tangents.
+    ObjectInstance unit = inst;
+    unit.params.x = 1.0;
+    v_normal = objectTransform(unit, a_normal);
+    v_tangent = vec4(objectTransform(unit, a_tangent.xyz), a_tangent.w);
+    v_position = p;
+#endif
+    gl_Position = u_matrix * vec4(p, 1.0);
+}
+#endif
+
+#ifdef FRAGMENT_SHADER
+layout(binding = BINDING_TEX_0) uniform sampler2D t_base_color;
+in vec2 v_uv;
+
+#ifdef SHADOW_PASS
+void main() {
+#ifdef ALPHA_MASK
+    if (u_base_color.a * texture(t_base_color, v_uv).a < u_emissive.w) discard;
+#endif
+}
+#else
+layout(binding = BINDING_TEX_1) uniform sampler2D t_metallic_roughness;
+layout(binding = BINDING_TEX_2) uniform sampler2D t_normal;
+layout(binding = BINDING_TEX_3) uniform sampler2D t_occlusion;
+layout(binding = BINDING_TEX_4) uniform sampler2D t_emissive;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec3 v_position;
+layout(location = 0) out vec4 o_color;  // emissive radiance
+layout(location = 1) out vec4 o_albedo;
+layout(location = 2) out vec4 o_normal;
+
+void main() {
+    vec4 base = u_base_color * texture(t_base_color, v_uv);
+#ifdef ALPHA_MASK
+    if (base.a < u_emissive.w) discard;
+#endif
+    vec3 n = safeNormalize(gl_FrontFacing ? v_normal : -v_normal);
+    // Tangent frame: the vertex tangent, or one from screen derivatives where the mesh has none.
+    vec3 t = v_tangent.xyz;
+    float handed = v_tangent.w;
+    if (handed == 0.0) {
+        vec3 dp1 = dFdx(v_position), dp2 = dFdy(v_position);
+        vec2 du1 = dFdx(v_uv), du2 = dFdy(v_uv);
+        t = dp1 * du2.y - dp2 * du1.y;
+        handed = (du1.x * du2.y - du2.x * du1.y) < 0.0 ? -1.0 : 1.0;
+    }
+    t = safeNormalize(t - n * dot(n, t));
+    vec3 b = cross(n, t) * handed;
+    vec3 tn = texture(t_normal, v_uv).xyz * 2.0 - 1.0;
+    tn.xy *= u_material.z;
+    n = safeNormalize(t * tn.x + b * tn.y + n * tn.z);
+
+    vec4 mr = texture(t_metallic_roughness, v_uv);
+    float metallic = clamp(u_material.x * mr.b, 0.0, 1.0);
+    float roughness = clamp(u_material.y * mr.g, 0.04, 1.0);
+    float occlusion = mix(1.0, texture(t_occlusion, v_uv).r, u_material.w);
+    Surface s;
+    s.albedo = base.rgb * (1.0 - metallic) * occlusion;
+    s.roughness = roughness;
+    s.normal = n;
+    s.f0 = mix(0.04, 0.16, metallic);
+    s.lit = true;
+    encodeSurface(s, o_albedo, o_normal);
+    o_color = vec4(u_emissive.rgb * texture(t_emissive, v_uv).rgb, 1.0);
+}
+#endif
+#endif

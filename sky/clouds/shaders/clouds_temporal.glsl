@@ -1,0 +1,67 @@
+// "clouds.temporal": the clouds' march accumulated over frames (Schneider 2015, Hillaire 2016).
+// Each texel's cloud point (its view ray at this frame's mean cloud distance, or far along the
+// ray where this frame found none) is reprojected into the previous frame along the clouds'
+// own depth, not the scene's (u_prev_clip: the previous frame's unjittered view-projection of
+// points relative to this camera, from the CPU in double). The history found there is clamped
+// to this frame's 3x3 neighbourhood box (premultiplied colour and coverage) and blended in
+// with weight 1 - max(1 / frames, blend): a still camera averages up to 1 / blend frames of
+// blue-noise offsets. History is rejected outside the previous image, where its distance
+// disagrees with the reprojected one by more than a quarter (another cloud), on a camera cut
+// and after a reset (u_params.y).
+#include "../../../renderer/shaders/fullscreen.glsl"
+
+#ifdef FRAGMENT_SHADER
+#include "../../../renderer/shaders/common.glsl"
+layout(binding = BINDING_TEX_0) uniform sampler2D u_clouds;
+layout(binding = BINDING_TEX_1) uniform sampler2D u_distance;
+layout(binding = BINDING_TEX_2) uniform sampler2D u_history;
+layout(binding = BINDING_TEX_3) uniform sampler2D u_history_distance;  // r distance (km), g frames accumulated
+layout(location = 0) uniform mat4 u_prev_clip;
+layout(location = 1) uniform vec4 u_shift;   // xyz this camera minus the previous one (m)
+layout(location = 2) uniform vec4 u_params;  // x blend, y 1: history rejected everywhere, zw this frame's jitter (NDC)
+in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_distance;
+
+// Beyond the layers: where no cloud is found the point is reprojected as far away.
+#define CLOUD_FAR_M 1.0e6
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 last = textureSize(u_clouds, 0) - 1;
+    vec4 current = texelFetch(u_clouds, p, 0);
+    float t = texelFetch(u_distance, p, 0).r;
+    vec4 lo = current, hi = current;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec4 c = texelFetch(u_clouds, clamp(p + ivec2(x, y), ivec2(0), last), 0);
+            lo = min(lo, c);
+            hi = max(hi, c);
+        }
+    vec2 uv = (vec2(p) + 0.5) / vec2(textureSize(u_clouds, 0));
+    vec3 point = viewRay(uv) * (t > 0.0 ? t : CLOUD_FAR_M);
+    vec4 prev = u_prev_clip * vec4(point, 1.0);
+    bool valid = u_params.y < 0.5 && prev.w > 1e-6;
+    // The point moved from its unjittered place (this texel's centre minus the jitter) to
+    // prev.xy / prev.w; the history, accumulated at texel centres, moved by as much.
+    vec2 prev_uv = valid ? (prev.xy / prev.w + u_params.zw) * 0.5 + 0.5 : vec2(-1.0);
+    valid = valid && all(greaterThanEqual(prev_uv, vec2(0.0))) && all(lessThanEqual(prev_uv, vec2(1.0)));
+    vec4 result = current;
+    float frames = 1.0, t_out = t;
+    if (valid) {
+        vec4 history = texture(u_history, prev_uv);
+        vec2 hd = texture(u_history_distance, prev_uv).rg;
+        hd.x *= 1000.0;
+        float expected = length(point + u_shift.xyz);
+        bool other_cloud = t > 0.0 && hd.x > 0.0 && abs(hd.x - expected) > 0.25 * expected;
+        if (!other_cloud) {
+            frames = min(hd.y + 1.0, 1.0 / u_params.x);
+            result = mix(clamp(history, lo, hi), current, max(1.0 / frames, u_params.x));
+            if (t <= 0.0) t_out = hd.x;
+        }
+    }
+    if (any(isnan(result)) || any(isinf(result))) result = current;
+    o_color = result;
+    o_distance = vec4(t_out * 1e-3, frames, 0.0, 0.0);
+}
+#endif

@@ -1,0 +1,47 @@
+// Scatter placement without GL: a rule of [objects] (terrain/scatter/object_settings.h) places
+// instances per world cell of cell_m x cell_m, like the grass: cell (i, k) holds
+// floor(density * cell^2 + u) candidates (u a hash of the cell: the fractional part on average),
+// and candidate j takes its position, model, yaw and scale from a hash of (i, k, j, seed). A
+// candidate stays where the ground allows it (height range, slope, grass weight). So a cell
+// always holds the same instances, whichever cells are placed with it and in whatever order:
+// moving away and back gives the same forest (tested).
+#pragma once
+
+#include "terrain/scatter/object_settings.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace vista {
+
+struct GroundSample {
+    bool valid = false;  // false: outside the terrain (nothing stands there)
+    double height_m = 0.0;
+    double slope = 0.0;  // rise over run
+    double grass = 1.0;  // terrain grass weight, 0..1
+};
+using GroundFunction = std::function<GroundSample(double x, double z)>;
+
+struct PlacedObject {
+    glm::dvec3 position{0.0};  // world, m (on the ground)
+    float yaw_rad = 0.0f;
+    float scale = 1.0f;
+    int file = 0;  // index into the rule's files
+    bool operator==(const PlacedObject&) const = default;
+};
+
+// The world cell holding point xz for rule r.
+glm::ivec2 scatterCellOf(const ScatterRule& r, glm::dvec2 xz);
+// Candidates in a cell (before the ground decides), for tests and statistics.
+int scatterCandidates(const ScatterRule& r, glm::ivec2 cell);
+// Appends the instances of one cell to out.
+void scatterCell(const ScatterRule& r, glm::ivec2 cell, const GroundFunction& ground, std::vector<PlacedObject>& out);
+// Every cell in [min_cell, max_cell] (inclusive), row by row.
+std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cell, glm::ivec2 max_cell,
+                                        const GroundFunction& ground);
+
+}  // namespace vista

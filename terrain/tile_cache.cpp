@@ -1,0 +1,371 @@
+// Tile cache: the pyramid's maths (halving, normals, per-tile min/max and error), the file
+// writer (streamed through an AtomicWriter, two levels in memory at a time) and the reader
+// (index in memory, tiles read with pread and checked one by one).
+//
+// File layout, little-endian as the machine writes it (the key has the input's mtime, so a
+// cache is never carried between machines anyway):
+//   Header  magic "VTCACHE1", version, tile, key, width, height, level count, mapping
+//   Tiles   per tile: heights (float), normals (RGBA8 snorm), level by level, row by row
+//   Index   one Entry per tile: offset, hash, size, min/max, error
+//   Trailer index offset, FNV-1a of header + index, end marker "VTCEND01"
+#include "terrain/tile_cache.h"
+
+#include "config/file_io.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace vista {
+namespace {
+
+constexpr char kMagic[8] = {'V', 'T', 'C', 'A', 'C', 'H', 'E', '1'};
+constexpr char kEnd[8] = {'V', 'T', 'C', 'E', 'N', 'D', '0', '1'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::size_t kKeyBytes = 64 << 10;  // bytes of the input hashed into its key
+
+struct Header {
+    char magic[8];
+    std::uint32_t version, tile;
+    TileCacheKey key;
+    std::int32_t width, height, levels, pad;
+    double size_x, size_z, height_scale, height_offset;
+};
+
+struct Trailer {
+    std::uint64_t index_offset, hash;
+    char end[8];
+};
+
+std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ull) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+    return hash;
+}
+
+std::int8_t snorm8(double v) { return std::int8_t(std::lround(std::clamp(v, -1.0, 1.0) * 127.0)); }
+
+// Position in level-l samples of level-(l + 1) sample i: every other one, the last one kept.
+int parentPosition(int i, int width) { return std::min(2 * i, width - 1); }
+
+// Height of level-l sample x (one axis) from the coarser level: linear between the coarser
+// samples around it. Returns the fraction and the coarser indices.
+void around(int x, int coarse_width, int width, int& i0, int& i1, double& f) {
+    i0 = std::min(x / 2, coarse_width - 1);
+    if (parentPosition(i0, width) > x) --i0;
+    i1 = std::min(i0 + 1, coarse_width - 1);
+    const int p0 = parentPosition(i0, width), p1 = parentPosition(i1, width);
+    f = p1 > p0 ? double(x - p0) / double(p1 - p0) : 0.0;
+}
+
+// Largest |fine - coarse interpolated| (in sample units) over the fine samples of each coarse
+// tile: those between its first and last coarse samples, borders included (shared).
+std::vector<float> levelErrors(const Heightmap& fine, const Heightmap& coarse, const TileCacheLevel& level, int tile) {
+    std::vector<float> errors(std::size_t(level.tiles_x) * std::size_t(level.tiles_z), 0.0f);
+    for (int tz = 0; tz < level.tiles_z; ++tz)
+        for (int tx = 0; tx < level.tiles_x; ++tx) {
+            const int x_end = parentPosition(std::min(tx * tile + tile, coarse.width - 1), fine.width);
+            const int z_end = parentPosition(std::min(tz * tile + tile, coarse.height - 1), fine.height);
+            float worst = 0.0f;
+            for (int z = parentPosition(tz * tile, fine.height); z <= z_end; ++z) {
+                int z0, z1;
+                double fz;
+                around(z, coarse.height, fine.height, z0, z1, fz);
+                for (int x = parentPosition(tx * tile, fine.width); x <= x_end; ++x) {
+                    int x0, x1;
+                    double fx;
+                    around(x, coarse.width, fine.width, x0, x1, fx);
+                    const double top = coarse.at(x0, z0) + (coarse.at(x1, z0) - coarse.at(x0, z0)) * fx;
+                    const double bottom = coarse.at(x0, z1) + (coarse.at(x1, z1) - coarse.at(x0, z1)) * fx;
+                    worst = std::max(worst, float(std::abs(double(fine.at(x, z)) - (top + (bottom - top) * fz))));
+                }
+            }
+            errors[std::size_t(tz) * std::size_t(level.tiles_x) + std::size_t(tx)] = worst;
+        }
+    return errors;
+}
+
+}  // namespace
+
+std::string tileCacheKey(const std::filesystem::path& input, TileCacheKey& key) {
+    if (std::string why = checkInputFile(input, std::numeric_limits<std::uintmax_t>::max()); !why.empty()) return why;
+    struct stat st {};
+    if (::stat(input.c_str(), &st) != 0) return input.string() + ": cannot read (" + std::strerror(errno) + ")";
+    key.size = std::uint64_t(st.st_size);
+    key.mtime_ns = std::int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
+    std::vector<char> head(std::min<std::size_t>(kKeyBytes, std::size_t(st.st_size)));
+    int fd = ::open(input.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return input.string() + ": cannot read (" + std::strerror(errno) + ")";
+    const ssize_t got = head.empty() ? 0 : ::pread(fd, head.data(), head.size(), 0);
+    ::close(fd);
+    if (got != ssize_t(head.size())) return input.string() + ": cannot read its first bytes";
+    key.header_hash = fnv1a(head.data(), head.size());
+    return {};
+}
+
+std::vector<TileCacheLevel> tileCacheLevels(int width, int height, int tile) {
+    std::vector<TileCacheLevel> levels;
+    for (int w = width, h = height;;) {
+        TileCacheLevel l{w, h, std::max(1, (w - 2) / tile + 1), std::max(1, (h - 2) / tile + 1)};
+        levels.push_back(l);
+        if (w <= tile + 1 && h <= tile + 1) break;
+        w = (w - 1 + 1) / 2 + 1;
+        h = (h - 1 + 1) / 2 + 1;
+    }
+    return levels;
+}
+
+Heightmap halveLevel(const Heightmap& level) {
+    Heightmap out;
+    out.width = level.width / 2 + 1;
+    out.height = level.height / 2 + 1;
+    out.samples.resize(std::size_t(out.width) * std::size_t(out.height));
+    for (int z = 0; z < out.height; ++z)
+        for (int x = 0; x < out.width; ++x)
+            out.samples[std::size_t(z) * std::size_t(out.width) + std::size_t(x)] =
+                level.at(parentPosition(x, level.width), parentPosition(z, level.height));
+    return out;
+}
+
+std::vector<std::int8_t> levelNormals(const Heightmap& level, double texel_x_m, double texel_z_m, double height_scale_m) {
+    std::vector<std::int8_t> normals(level.samples.size() * 4);
+    for (int z = 0; z < level.height; ++z)
+        for (int x = 0; x < level.width; ++x) {
+            const int xl = std::max(x - 1, 0), xr = std::min(x + 1, level.width - 1);
+            const int zu = std::max(z - 1, 0), zd = std::min(z + 1, level.height - 1);
+            const double dx = (double(level.at(xr, z)) - level.at(xl, z)) * height_scale_m / (double(xr - xl) * texel_x_m);
+            const double dz = (double(level.at(x, zd)) - level.at(x, zu)) * height_scale_m / (double(zd - zu) * texel_z_m);
+            const double len = std::sqrt(dx * dx + 1.0 + dz * dz);
+            std::int8_t* n = &normals[(std::size_t(z) * std::size_t(level.width) + std::size_t(x)) * 4];
+            n[0] = snorm8(-dx / len);
+            n[1] = snorm8(1.0 / len);
+            n[2] = snorm8(-dz / len);
+            n[3] = 0;
+        }
+    return normals;
+}
+
+CacheTile cutTile(const Heightmap& level, const std::vector<std::int8_t>& normals, int tile, int tx, int tz,
+                  const TerrainMapping& mapping) {
+    CacheTile t;
+    const int x0 = tx * tile, z0 = tz * tile;
+    t.width = std::min(tile + 1, level.width - x0);
+    t.height = std::min(tile + 1, level.height - z0);
+    t.heights.resize(std::size_t(t.width) * std::size_t(t.height));
+    t.normals.resize(t.heights.size() * 4);
+    float lo = level.at(x0, z0), hi = lo;
+    for (int z = 0; z < t.height; ++z)
+        for (int x = 0; x < t.width; ++x) {
+            const std::size_t to = std::size_t(z) * std::size_t(t.width) + std::size_t(x);
+            const std::size_t from = std::size_t(z0 + z) * std::size_t(level.width) + std::size_t(x0 + x);
+            t.heights[to] = level.samples[from];
+            std::memcpy(&t.normals[to * 4], &normals[from * 4], 4);
+            lo = std::min(lo, t.heights[to]);
+            hi = std::max(hi, t.heights[to]);
+        }
+    const double a = mapping.height_offset_m + mapping.height_scale_m * double(lo);
+    const double b = mapping.height_offset_m + mapping.height_scale_m * double(hi);
+    t.min_m = float(std::min(a, b));
+    t.max_m = float(std::max(a, b));
+    return t;
+}
+
+std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, const TileCacheKey& key, int tile,
+                           const std::filesystem::path& file, bool force, const std::function<void(int, int)>& progress) {
+    if (tile < 2 || tile > 4096) return file.string() + ": tile size " + std::to_string(tile) + " is not accepted; accepted: 2..4096";
+    if (map.width < 2 || map.height < 2 || map.samples.size() != std::size_t(map.width) * std::size_t(map.height))
+        return file.string() + ": the map is empty or its size does not match its samples";
+    // Refused before any work when the file exists (without force) or its folder is missing.
+    if (std::string why = checkOutputFile(file, force, "--out"); !why.empty()) return why;
+    const std::vector<TileCacheLevel> levels = tileCacheLevels(map.width, map.height, tile);
+    int total = 0;
+    for (const auto& l : levels) total += l.tiles_x * l.tiles_z;
+
+    AtomicWriter out(file, force);
+    Header header{};
+    std::memcpy(header.magic, kMagic, sizeof kMagic);
+    header.version = kVersion;
+    header.tile = std::uint32_t(tile);
+    header.key = key;
+    header.width = map.width;
+    header.height = map.height;
+    header.levels = std::int32_t(levels.size());
+    header.size_x = mapping.sizeX();
+    header.size_z = mapping.sizeZ();
+    header.height_scale = mapping.height_scale_m;
+    header.height_offset = mapping.height_offset_m;
+    std::uint64_t offset = sizeof header;
+    out.write(&header, sizeof header);
+
+    std::vector<std::vector<TileCache::Entry>> index;  // per level
+    Heightmap fine, level = map;
+    std::vector<float> child_errors;  // the level before's tile errors (m)
+    int done = 0;
+    for (std::size_t l = 0; l < levels.size() && out.ok(); ++l) {
+        const TileCacheLevel& info = levels[l];
+        std::vector<float> errors(std::size_t(info.tiles_x) * std::size_t(info.tiles_z), 0.0f);
+        if (l > 0) {
+            // A tile's error: what its level misses of the finer one, plus the most its finer tiles miss.
+            errors = levelErrors(fine, level, info, tile);
+            const TileCacheLevel& below = levels[l - 1];
+            for (int tz = 0; tz < info.tiles_z; ++tz)
+                for (int tx = 0; tx < info.tiles_x; ++tx) {
+                    float& e = errors[std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)];
+                    e = float(double(e) * std::abs(mapping.height_scale_m));
+                    float most = 0.0f;
+                    for (int cz = 2 * tz; cz <= std::min(2 * tz + 1, below.tiles_z - 1); ++cz)
+                        for (int cx = 2 * tx; cx <= std::min(2 * tx + 1, below.tiles_x - 1); ++cx)
+                            most = std::max(most, child_errors[std::size_t(cz) * std::size_t(below.tiles_x) + std::size_t(cx)]);
+                    e += most;
+                }
+        }
+        const double step = double(std::int64_t(1) << l);
+        const std::vector<std::int8_t> normals =
+            levelNormals(level, mapping.texelSizeX() * step, mapping.texelSizeZ() * step, mapping.height_scale_m);
+        std::vector<TileCache::Entry>& entries = index.emplace_back();
+        for (int tz = 0; tz < info.tiles_z; ++tz)
+            for (int tx = 0; tx < info.tiles_x; ++tx) {
+                CacheTile t = cutTile(level, normals, tile, tx, tz, mapping);
+                TileCache::Entry e;
+                e.offset = offset;
+                e.width = std::uint32_t(t.width);
+                e.height = std::uint32_t(t.height);
+                e.min_m = t.min_m;
+                e.max_m = t.max_m;
+                e.error_m = errors[std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)];
+                const std::size_t hb = t.heights.size() * sizeof(float), nb = t.normals.size();
+                e.hash = fnv1a(t.normals.data(), nb, fnv1a(t.heights.data(), hb));
+                out.write(t.heights.data(), hb);
+                out.write(t.normals.data(), nb);
+                offset += hb + nb;
+                entries.push_back(e);
+                if (progress) progress(++done, total);
+            }
+        child_errors = std::move(errors);
+        if (l + 1 < levels.size()) {
+            fine = std::move(level);
+            level = halveLevel(fine);
+        }
+    }
+    std::uint64_t hash = fnv1a(&header, sizeof header);
+    for (const auto& entries : index) {
+        out.write(entries.data(), entries.size() * sizeof(TileCache::Entry));
+        hash = fnv1a(entries.data(), entries.size() * sizeof(TileCache::Entry), hash);
+    }
+    Trailer trailer{offset, hash, {}};
+    std::memcpy(trailer.end, kEnd, sizeof kEnd);
+    out.write(&trailer, sizeof trailer);
+    return out.commit();
+}
+
+std::unique_ptr<TileCache> TileCache::open(const std::filesystem::path& file, std::string& why) {
+    if (why = checkInputFile(file, std::numeric_limits<std::uintmax_t>::max()); !why.empty()) return nullptr;
+    std::unique_ptr<TileCache> c(new TileCache);
+    c->file_ = file;
+    c->fd_ = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    const std::string name = file.string() + ": ";
+    if (c->fd_ < 0) {
+        why = name + "cannot read (" + std::strerror(errno) + ")";
+        return nullptr;
+    }
+    struct stat st {};
+    ::fstat(c->fd_, &st);
+    const std::uint64_t size = std::uint64_t(st.st_size);
+    Header header{};
+    Trailer trailer{};
+    auto readAt = [&](void* to, std::size_t bytes, std::uint64_t at) {
+        return at + bytes <= size && ::pread(c->fd_, to, bytes, off_t(at)) == ssize_t(bytes);
+    };
+    if (!readAt(&header, sizeof header, 0) || std::memcmp(header.magic, kMagic, sizeof kMagic) != 0) {
+        why = name + "is not a vista tile cache (no VTCACHE1 header)";
+        return nullptr;
+    }
+    if (header.version != kVersion) {
+        why = name + "is a tile cache of version " + std::to_string(header.version) + "; this vista reads version " +
+              std::to_string(kVersion);
+        return nullptr;
+    }
+    if (!readAt(&trailer, sizeof trailer, size - std::min<std::uint64_t>(size, sizeof trailer)) ||
+        std::memcmp(trailer.end, kEnd, sizeof kEnd) != 0) {
+        why = name + "is truncated (no end marker after " + std::to_string(size) + " bytes)";
+        return nullptr;
+    }
+    if (header.tile < 2 || header.width < 2 || header.height < 2 || header.levels < 1 || header.levels > 64) {
+        why = name + "has a damaged header";
+        return nullptr;
+    }
+    c->tile_ = int(header.tile);
+    c->levels_ = tileCacheLevels(header.width, header.height, c->tile_);
+    std::size_t count = 0;
+    for (const auto& l : c->levels_) {
+        c->first_.push_back(count);
+        count += std::size_t(l.tiles_x) * std::size_t(l.tiles_z);
+    }
+    const std::uint64_t index_bytes = std::uint64_t(count) * sizeof(Entry);
+    if (int(c->levels_.size()) != header.levels || trailer.index_offset + index_bytes + sizeof trailer != size) {
+        why = name + "is truncated or damaged (its index does not fit its " + std::to_string(size) + " bytes)";
+        return nullptr;
+    }
+    c->entries_.resize(count);
+    if (!readAt(c->entries_.data(), index_bytes, trailer.index_offset) ||
+        fnv1a(c->entries_.data(), index_bytes, fnv1a(&header, sizeof header)) != trailer.hash) {
+        why = name + "is damaged (its header and index fail their hash)";
+        return nullptr;
+    }
+    c->key_ = header.key;
+    c->mapping_ = TerrainMapping{header.size_x, header.height_scale, header.height_offset, header.width, header.height,
+                                 header.size_z};
+    return c;
+}
+
+TileCache::~TileCache() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+std::size_t TileCache::index(int level, int tx, int tz) const {
+    return first_[std::size_t(level)] + std::size_t(tz) * std::size_t(levels_[std::size_t(level)].tiles_x) + std::size_t(tx);
+}
+
+bool TileCache::read(int level, int tx, int tz, CacheTile& out, std::string& why) const {
+    const std::string where = file_.string() + ": tile (" + std::to_string(level) + ", " + std::to_string(tx) + ", " +
+                              std::to_string(tz) + ")";
+    if (level < 0 || level >= int(levels_.size()) || tx < 0 || tz < 0 || tx >= levels_[std::size_t(level)].tiles_x ||
+        tz >= levels_[std::size_t(level)].tiles_z) {
+        why = where + " does not exist";
+        return false;
+    }
+    const Entry& e = entries_[index(level, tx, tz)];
+    out.width = int(e.width);
+    out.height = int(e.height);
+    out.min_m = e.min_m;
+    out.max_m = e.max_m;
+    out.error_m = e.error_m;
+    out.heights.resize(std::size_t(e.width) * std::size_t(e.height));
+    out.normals.resize(out.heights.size() * 4);
+    const std::size_t hb = out.heights.size() * sizeof(float), nb = out.normals.size();
+    if (e.width > std::uint32_t(tile_ + 1) || e.height > std::uint32_t(tile_ + 1) ||
+        ::pread(fd_, out.heights.data(), hb, off_t(e.offset)) != ssize_t(hb) ||
+        ::pread(fd_, out.normals.data(), nb, off_t(e.offset + hb)) != ssize_t(nb) ||
+        fnv1a(out.normals.data(), nb, fnv1a(out.heights.data(), hb)) != e.hash) {
+        why = where + " is damaged (fails its hash); rebuild the cache with vista terrain-cache --force";
+        return false;
+    }
+    return true;
+}
+
+std::size_t TileCache::memoryBytes() const {
+    return entries_.size() * sizeof(Entry) + first_.size() * sizeof(std::size_t) + levels_.size() * sizeof(TileCacheLevel);
+}
+
+std::filesystem::path defaultTileCachePath(const std::filesystem::path& input) {
+    std::filesystem::path p = input;
+    p += ".vtc";
+    return p;
+}
+
+}  // namespace vista

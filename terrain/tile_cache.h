@@ -1,0 +1,108 @@
+// The terrain tile cache (`vista terrain-cache FILE`): a level-of-detail pyramid on disk, built
+// once per input, holding per tile its heights, normals, min/max and grid error, so a reader
+// needs only the index in memory and reads the tiles it wants.
+//
+// Level 0 is the map; level l + 1 keeps every other sample of level l (what CDLOD's coarser
+// grids sample), down to the first level that fits one tile. A tile of level l covers samples
+// [t * tile, t * tile + tile] of that level (neighbours share their border samples), fewer at
+// the map's far edges. The file is keyed by its input (size, modification time, a hash of the
+// first 64 KiB), written atomically, and checked: a header/index hash, a hash per tile, an end
+// marker, so a truncated, damaged or stale cache is found and rebuilt or refused.
+#pragma once
+
+#include "terrain/cdlod.h"
+#include "terrain/heightmap.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vista {
+
+struct TileCacheKey {
+    std::uint64_t size = 0;         // bytes of the input
+    std::int64_t mtime_ns = 0;      // its modification time
+    std::uint64_t header_hash = 0;  // FNV-1a of its first 64 KiB
+    bool operator==(const TileCacheKey&) const = default;
+};
+
+// The key of an input file; "" on success, else why.
+std::string tileCacheKey(const std::filesystem::path& input, TileCacheKey& key);
+
+struct CacheTile {
+    int width = 0, height = 0;        // samples
+    float min_m = 0.0f, max_m = 0.0f; // heights (m) of the tile's samples
+    float error_m = 0.0f;             // largest height difference (m) to the full map over the tile (0 at level 0)
+    std::vector<float> heights;       // samples as the heightmap's (metres = offset + scale * sample), row-major
+    std::vector<std::int8_t> normals; // world normals as RGBA8 snorm (x, y, z, 0), as the GPU keeps them
+};
+
+struct TileCacheLevel {
+    int width = 0, height = 0;  // samples
+    int tiles_x = 0, tiles_z = 0;
+};
+
+// The pyramid's levels: sizes, tile counts.
+std::vector<TileCacheLevel> tileCacheLevels(int width, int height, int tile);
+
+// Level l + 1 of the pyramid from level l (every other sample; the last one always kept).
+Heightmap halveLevel(const Heightmap& level);
+// Normals of a level (central differences at its texel spacing, one-sided at the edges), RGBA8 snorm.
+std::vector<std::int8_t> levelNormals(const Heightmap& level, double texel_x_m, double texel_z_m, double height_scale_m);
+// The tile (tx, tz) of a level held in memory, with min/max; error_m is left 0.
+CacheTile cutTile(const Heightmap& level, const std::vector<std::int8_t>& normals, int tile, int tx, int tz,
+                  const TerrainMapping& mapping);
+
+// Writes the cache of map (its mapping, its input's key) to file atomically (config/file_io.h);
+// force: replace a file there. progress(done, total) after each tile. "" on success, else why.
+std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, const TileCacheKey& key, int tile,
+                           const std::filesystem::path& file, bool force,
+                           const std::function<void(int, int)>& progress = {});
+
+class TileCache {
+public:
+    // Opens and checks a cache: header, index and end marker (not the tiles: read() checks
+    // each). Null with why when it is missing, truncated, damaged or of another version.
+    static std::unique_ptr<TileCache> open(const std::filesystem::path& file, std::string& why);
+    ~TileCache();
+    TileCache(const TileCache&) = delete;
+    TileCache& operator=(const TileCache&) = delete;
+
+    const TileCacheKey& key() const { return key_; }
+    const TerrainMapping& mapping() const { return mapping_; }
+    int tileSize() const { return tile_; }
+    const std::vector<TileCacheLevel>& levels() const { return levels_; }
+    // Reads one tile from the disk and checks its hash; false with why.
+    bool read(int level, int tx, int tz, CacheTile& out, std::string& why) const;
+    // Bytes held in memory: the index only.
+    std::size_t memoryBytes() const;
+
+    // One tile's place in the file and what the index keeps of it.
+    struct Entry {
+        std::uint64_t offset = 0, hash = 0;
+        std::uint32_t width = 0, height = 0;
+        float min_m = 0, max_m = 0, error_m = 0;
+        std::uint32_t pad = 0;
+    };
+
+private:
+    TileCache() = default;
+    std::size_t index(int level, int tx, int tz) const;
+
+    std::filesystem::path file_;
+    int fd_ = -1;
+    TileCacheKey key_;
+    TerrainMapping mapping_;
+    int tile_ = 0;
+    std::vector<TileCacheLevel> levels_;
+    std::vector<std::size_t> first_;  // first entry of each level
+    std::vector<Entry> entries_;
+};
+
+// The cache file of an input when none is named: next to it, "<input>.vtc".
+std::filesystem::path defaultTileCachePath(const std::filesystem::path& input);
+
+}  // namespace vista

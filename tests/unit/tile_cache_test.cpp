@@ -1,0 +1,170 @@
+// The terrain tile cache (terrain/tile_cache.h): a round trip equals the pyramid built in
+// memory, tile errors bound what each level misses of the full map, and a truncated, damaged
+// or stale cache is found.
+#include "../temp_dir.h"
+#include "terrain/tile_cache.h"
+
+#include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace vista;
+namespace fs = std::filesystem;
+
+namespace {
+
+using test::TempDir;
+
+// A small island: the generator the default scene's map comes from, at a non-2^n+1 size too.
+Heightmap island(int size) {
+    IslandParams p;
+    p.size = size;
+    p.seed = 7;
+    p.octaves = 6;
+    p.erosion_passes = 1;
+    return generateIsland(p);
+}
+
+TerrainMapping mappingOf(const Heightmap& map) { return TerrainMapping{2000.0, 400.0, -50.0, map.width, map.height, 1500.0}; }
+
+std::string build(const Heightmap& map, const fs::path& file, int tile, bool force = false) {
+    TileCacheKey key{123, 456, 789};
+    return buildTileCache(map, mappingOf(map), key, tile, file, force);
+}
+
+}  // namespace
+
+TEST_CASE("tile cache: the pyramid's levels halve down to one tile") {
+    std::vector<TileCacheLevel> l = tileCacheLevels(257, 129, 32);
+    REQUIRE(l.size() == 4);
+    CHECK(l[0].width == 257);
+    CHECK(l[0].tiles_x == 8);
+    CHECK(l[0].tiles_z == 4);
+    CHECK(l[3].width == 33);
+    CHECK(l[3].height == 17);
+    CHECK(l[3].tiles_x == 1);
+    // A size that is not 2^n + 1 keeps its last sample at every level.
+    Heightmap m{6, 2, {0, 1, 2, 3, 4, 5, 10, 11, 12, 13, 14, 15}};
+    Heightmap h = halveLevel(m);
+    CHECK(h.width == 4);
+    CHECK(h.samples == std::vector<float>{0, 2, 4, 5, 10, 12, 14, 15});
+}
+
+TEST_CASE("tile cache: a round trip equals the pyramid in memory, reading one tile at a time") {
+    TempDir dir("roundtrip");
+    for (int size : {129, 150}) {
+        CAPTURE(size);
+        const Heightmap map = island(size);
+        const TerrainMapping mapping = mappingOf(map);
+        const fs::path file = dir / ("map" + std::to_string(size) + ".vtc");
+        REQUIRE(build(map, file, 32) == "");
+        std::string why;
+        auto cache = TileCache::open(file, why);
+        REQUIRE_MESSAGE(cache, why);
+        CHECK(cache->key() == TileCacheKey{123, 456, 789});
+        CHECK(cache->mapping().sizeX() == 2000.0);
+        CHECK(cache->mapping().sizeZ() == 1500.0);
+        CHECK(cache->mapping().height_offset_m == -50.0);
+        // The index is all a reader holds: far less than the map.
+        CHECK(cache->memoryBytes() < map.samples.size() * sizeof(float) / 8);
+
+        Heightmap level = map;
+        for (std::size_t l = 0; l < cache->levels().size(); ++l) {
+            const TileCacheLevel& info = cache->levels()[l];
+            REQUIRE(level.width == info.width);
+            const double step = double(1 << l);
+            const auto normals = levelNormals(level, mapping.texelSizeX() * step, mapping.texelSizeZ() * step, mapping.height_scale_m);
+            for (int tz = 0; tz < info.tiles_z; ++tz)
+                for (int tx = 0; tx < info.tiles_x; ++tx) {
+                    CacheTile disk;
+                    REQUIRE_MESSAGE(cache->read(int(l), tx, tz, disk, why), why);
+                    const CacheTile mem = cutTile(level, normals, 32, tx, tz, mapping);
+                    CHECK(disk.width == mem.width);
+                    CHECK(disk.height == mem.height);
+                    CHECK(disk.heights == mem.heights);  // bit for bit
+                    CHECK(disk.normals == mem.normals);
+                    CHECK(disk.min_m == mem.min_m);
+                    CHECK(disk.max_m == mem.max_m);
+                    if (l == 0) CHECK(disk.error_m == 0.0f);
+                    // The error bounds the full map against this level's bilinear surface over the tile.
+                    double worst = 0.0;
+                    const int x0 = tx * 32 << l, z0 = tz * 32 << l;
+                    for (int z = z0; z <= std::min(z0 + (32 << l), map.height - 1); ++z)
+                        for (int x = x0; x <= std::min(x0 + (32 << l), map.width - 1); ++x) {
+                            // Level coordinates of the full map's sample; uniform spacing for 2^n + 1 sizes.
+                            if (size != 129) continue;
+                            const double u = double(x) / step, v = double(z) / step;
+                            worst = std::max(worst, std::abs(double(map.at(x, z)) - level.sample(u, v)) * mapping.height_scale_m);
+                        }
+                    CHECK(double(disk.error_m) >= worst - 1e-3);
+                }
+            if (l + 1 < cache->levels().size()) level = halveLevel(level);
+        }
+        // The coarsest tile is the map's whole range.
+        CacheTile top;
+        REQUIRE(cache->read(int(cache->levels().size()) - 1, 0, 0, top, why));
+        CHECK(top.error_m > 0.0f);
+        CHECK_FALSE(cache->read(0, 99, 0, top, why));
+        CHECK(why.find("does not exist") != std::string::npos);
+    }
+}
+
+TEST_CASE("tile cache: a truncated, damaged or foreign cache is found, and an existing one kept without force") {
+    TempDir dir("corrupt");
+    const Heightmap map = island(65);
+    const fs::path file = dir / "map.vtc";
+    REQUIRE(build(map, file, 16) == "");
+    CHECK(build(map, file, 16).find("already exists") != std::string::npos);  // not replaced without force
+    REQUIRE(build(map, file, 16, true) == "");
+    const auto size = fs::file_size(file);
+    std::string bytes;
+    {
+        std::ifstream in(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    auto write = [&](const std::string& name, const std::string& content) {
+        std::ofstream(dir / name, std::ios::binary) << content;
+        return dir / name;
+    };
+    std::string why;
+    CHECK_FALSE(TileCache::open(write("cut.vtc", bytes.substr(0, size / 2)), why));
+    CHECK(why.find("truncated") != std::string::npos);
+    CHECK_FALSE(TileCache::open(write("short.vtc", bytes.substr(0, size - 1)), why));
+    CHECK(why.find("truncated") != std::string::npos);
+    CHECK_FALSE(TileCache::open(write("foreign.vtc", "PNG not a cache"), why));
+    CHECK(why.find("not a vista tile cache") != std::string::npos);
+    std::string header = bytes;
+    header[60] ^= 0x40;  // inside the header's mapping
+    CHECK_FALSE(TileCache::open(write("header.vtc", header), why));
+    CHECK(why.find("fail their hash") != std::string::npos);
+    // A damaged tile opens (the index is fine) but that tile is refused when read.
+    std::string tile = bytes;
+    tile[200] ^= 0x01;
+    auto cache = TileCache::open(write("tile.vtc", tile), why);
+    REQUIRE(cache);
+    CacheTile t;
+    CHECK_FALSE(cache->read(0, 0, 0, t, why));
+    CHECK(why.find("tile (0, 0, 0) is damaged") != std::string::npos);
+    CHECK(cache->read(0, 1, 0, t, why));
+}
+
+TEST_CASE("tile cache: the key follows the input's size, time and first bytes") {
+    TempDir dir("key");
+    const fs::path input = dir / "input.bin";
+    std::ofstream(input) << "first version";
+    TileCacheKey a, b, c;
+    REQUIRE(tileCacheKey(input, a) == "");
+    CHECK(a.size == 13);
+    std::ofstream(input) << "other version";
+    fs::last_write_time(input, fs::last_write_time(input) + std::chrono::seconds(5));
+    REQUIRE(tileCacheKey(input, b) == "");
+    CHECK(b.size == a.size);
+    CHECK(b.header_hash != a.header_hash);
+    CHECK_FALSE(a == b);
+    REQUIRE(tileCacheKey(input, c) == "");
+    CHECK(b == c);
+    CHECK(tileCacheKey(dir / "missing.bin", c) != "");
+    CHECK(defaultTileCachePath("data/dem/x.tif") == fs::path("data/dem/x.tif.vtc"));
+}
