@@ -18,8 +18,13 @@ FUZZ_TARGETS := ini camera_path heightmap dem gltf
 SANITIZE_DIR ?= build-sanitize
 # Left out of the sanitizer run, to keep CI within its hour: drivers that only re-run vista's
 # commands already run there (the quality sweep, the bench-gpu script, the Slurm cluster) and
-# the extreme-scene sweep (minutes under the sanitizers; the plain build runs it).
-SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster|extreme scenes .config
+# the extreme-scene sweep (minutes under the sanitizers; the plain build runs it). Also the
+# image comparisons whose time is llvmpipe's rendering (not instrumented) and vista's CPU sky
+# reference at full image sizes: the golden images (every post pass also runs in postfx_test),
+# and the GPU sky and aerial perspective against the CPU reference (the reference runs under
+# the sanitizers in the atmosphere unit tests, the sky and aerial passes in every GL scene test).
+# Every parser, file writer, CLI error path and unit test stays in the run.
+SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster|extreme scenes .config|golden images of the default scene|sky radiance from the GPU LUTs|aerial perspective on the ground matches
 # Mesa (llvmpipe under OSMesa) is not built with the sanitizers and keeps allocations until exit:
 # leaks are not checked in the tests; every other AddressSanitizer check is.
 export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
@@ -86,8 +91,12 @@ fuzz: fuzz-deps
 	done
 
 # Unit and GL tests built with -fsanitize=address,undefined (VISTA_SANITIZE) in $(SANITIZE_DIR).
+# -g1 (line tables, no variables): a report's stack trace still names functions, files and lines,
+# and each file compiles in 15-28% less CPU time than with -g (measured on three files).
+SANITIZE_CXXFLAGS ?= -O2 -g1 -DNDEBUG
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISTA_BUILD_TESTS=ON -DVISTA_SANITIZE=address,undefined \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SANITIZE_CXXFLAGS)" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(SANITIZE_CXXFLAGS)" \
 	  > $(SANITIZE_DIR).configure.log 2>&1 || { cat $(SANITIZE_DIR).configure.log; exit 1; }
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) --timeout 1800 -E "$(SANITIZE_SKIP)"
