@@ -40,8 +40,8 @@ int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
 
     const double copy_ms = renderer.measureReferenceCopy(o.width, o.height);
     nlohmann::json rows = nlohmann::json::array();
-    std::printf("%-8s %9s %9s %11s %9s %10s %10s %10s %9s %10s %9s\n", "trees", "placed", "drawn", "triangles", "cull_ms",
-                "gbuffer_ms", "terrain_ms", "copies", "terr_cop", "memory_MB", "cpu_ms");
+    std::printf("%-8s %9s %9s %9s %11s %9s %10s %10s %10s %9s %10s %9s\n", "trees", "placed", "drawn", "impostors", "triangles",
+                "cull_ms", "gbuffer_ms", "terrain_ms", "copies", "terr_cop", "memory_MB", "cpu_ms");
     for (int trees : o.trees) {
         ScatterRule rule;
         rule.files = {"data/props/tree.glb"};
@@ -56,7 +56,7 @@ int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
             printErrors(errors);
             return 2;
         }
-        std::vector<double> cull, draw, terrain, drawn, tris, cpu;
+        std::vector<double> cull, draw, terrain, drawn, impostors, tris, cpu;
         FrameRequest request;
         std::vector<unsigned char> image;
         request.capture_ldr = &image;
@@ -66,16 +66,18 @@ int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
             renderer.render(s, view, 10.0, request);
             const double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             FrameTiming t = renderer.timers().collect(true).back();
-            std::uint64_t n = 0, tri = 0;
+            std::uint64_t n = 0, tri = 0, imp = 0;
             for (const auto& c : renderer.counters().collect(true)) {
                 if (c.name == "objects.instances") n = c.value;
                 if (c.name == "objects.triangles") tri = c.value;
+                if (c.name == "objects.impostors") imp = c.value;
             }
             if (f < 2) continue;
             cull.push_back(passMs(t, "objects.cull"));
             draw.push_back(passMs(t, "objects.gbuffer"));
             terrain.push_back(passMs(t, "terrain.gbuffer"));
             drawn.push_back(double(n));
+            impostors.push_back(double(imp));
             tris.push_back(double(tri));
             cpu.push_back(cpu_ms);
         }
@@ -83,11 +85,12 @@ int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
         const double placed = objects ? double(objects->stats().instances) : 0.0;
         const double memory = objects ? double(objects->memoryBytes()) : 0.0;
         const double c = median(cull), d = median(draw), te = median(terrain);
-        std::printf("%-8d %9.0f %9.0f %11.0f %9.3f %10.3f %10.3f %10.2f %9.2f %10.2f %9.2f\n", trees, placed, median(drawn),
-                    median(tris), c, d, te, (c + d) / copy_ms, te / copy_ms, memory / 1048576.0, median(cpu));
+        std::printf("%-8d %9.0f %9.0f %9.0f %11.0f %9.3f %10.3f %10.3f %10.2f %9.2f %10.2f %9.2f\n", trees, placed, median(drawn),
+                    median(impostors), median(tris), c, d, te, (c + d) / copy_ms, te / copy_ms, memory / 1048576.0, median(cpu));
         rows.push_back({{"trees", trees},
                         {"placed", placed},
                         {"drawn", median(drawn)},
+                        {"impostors", median(impostors)},
                         {"triangles", median(tris)},
                         {"cull_gpu_ms", c},
                         {"gbuffer_gpu_ms", d},

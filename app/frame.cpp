@@ -453,7 +453,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);
-    if (object_lists.valid()) objects_->addGbufferPass(graph, rc, object_lists, scene);
+    if (object_lists.valid()) objects_->addGbufferPass(graph, rc, s.objects, object_lists, scene);
     // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
     const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
     if (clouds) {
@@ -475,7 +475,8 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
             LightPassOptions options;
             options.count = request.count_lights;
             options.heat = s.debug.view == DebugView::Lights || request.light_heat;
-            options.forward = request.forward_lights || s.water.enabled;  // water.surface shades them forward
+            // water.surface and objects.transparent shade them forward
+            options.forward = request.forward_lights || s.water.enabled || (objects_ && objects_->hasTransparent());
             options.spot_shadows = &spot_input;
             local_lights_->addPasses(graph, rc, scene, counters_, options);
         }
@@ -506,6 +507,18 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
     } else if (!s.water.enabled) {
         water_.reset();  // a disabled feature keeps nothing allocated
+    }
+    // Glass and other BLEND materials over the sea, before the aerial perspective fogs both.
+    if (object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
+        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+        ForwardLight forward{light.sun_irradiance, light.sky_up, light.ground_up, "", nullptr};
+        if (local_lights) {
+            forward.lights_define = local_lights_->define();
+            forward.bind_lights = [this] { local_lights_->bindForForward(); };
+        }
+        objects_->addTransparentPass(graph, rc, s.objects, forward, scene);
+        report.counters["objects.transparent"] = double(objects_->transparentDrawn());
+        report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
     }
     if (!shadow_view && s.sky.enabled) {
         sky_->addScenePasses(graph, rc, s.sky, scene);

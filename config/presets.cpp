@@ -37,6 +37,7 @@ bool lowCloudsOn(const Settings& s) { return cloudsOn(s) && s.clouds.low.enabled
 bool highCloudsOn(const Settings& s) { return cloudsOn(s) && s.clouds.high.enabled; }
 bool grassOn(const Settings& s) { return s.grass.enabled && s.terrain.enabled; }
 bool waterOn(const Settings& s) { return s.water.enabled; }
+bool objectsOn(const Settings& s) { return s.terrain.enabled && objectsWanted(s.objects); }
 bool ssaoOn(const Settings& s) { return s.ssao.enabled; }
 bool postOn(const Settings& s, PostEffect e, bool enabled) {
     return s.postfx.enabled && enabled && std::find(s.postfx.order.begin(), s.postfx.order.end(), e) != s.postfx.order.end();
@@ -123,6 +124,11 @@ const QualityKnob kKnobs[] = {
     {"clouds.high.steps", "steps", {1, 2, 2, 4, 16}, highCloudsOn},
     // Grass: segments per near blade (density and radius change what is drawn, not how well).
     {"grass.segments", "", {2, 3, 4, 6, 8}, grassOn},
+    // Objects: the mesh LOD distances and where octahedral impostors take over; the reference
+    // draws every instance as its full mesh.
+    {"objects.lod1_distance_m", "m", {30, 45, 60, 100, 1.0e5}, objectsOn},
+    {"objects.lod2_distance_m", "m", {120, 180, 250, 400, 1.0e5}, objectsOn},
+    {"objects.impostor_distance_m", "m", {80, 110, 150, 300, 1.0e6}, objectsOn},
     // The sea: ring grid segments (cells about 2 pi / segments of their distance), screen-space
     // reflection steps (0: the sky alone, [water] reflection = sky) and waves.
     {"water.grid_segments", "", {64, 96, 128, 192, 256}, waterOn},

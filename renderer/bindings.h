@@ -20,6 +20,7 @@ constexpr int kLightIndices = 4;   // shader storage: light index lists
 constexpr int kLightHash = 5;      // shader storage: hashed light octree tables
 constexpr int kLightSpheres = 6;   // shader storage: view-space bounding spheres (culling)
 constexpr int kAux = 7;            // shader storage: a pass's second counter or pool
+constexpr int kAux2 = 8;           // shader storage: a pass's third counter
 constexpr int kLightShadeDraw = 10;  // shader storage: lights.shade's indirect draw (lights.cull sets it)
 constexpr int kShadowUniforms = 2; // uniform block: ShadowUniforms (renderer/shadows/shaders/shadows.glsl)
 constexpr int kShadowMap = 8;      // texture unit: sun cascades, depth compare (sampler2DArrayShadow)

@@ -4,6 +4,7 @@
 #include "renderer/bindings.h"
 #include "renderer/gl_device.h"
 #include "renderer/meshes/gltf_loader.h"
+#include "renderer/meshes/impostor.h"
 #include "renderer/meshes/mesh_lod.h"
 #include "terrain/cdlod.h"
 
@@ -26,6 +27,7 @@ struct GpuModel {
     glm::vec4 sphere;
     glm::uvec4 region;
     glm::uvec4 triangles;
+    glm::uvec4 impostor;  // x: region, y: triangles
 };
 struct DrawCommand {
     std::uint32_t count, instance_count, first_index;
@@ -36,6 +38,7 @@ struct DrawCommand {
 // Grid cells of the two simplified LODs along the model's longest side.
 const std::vector<int> kLodCells = {10, 4};
 constexpr int kShadowLod = 1;
+constexpr int kShadowGroup = 3, kImpostorGroup = 4;
 
 bool sameLists(const ObjectsSettings& a, const ObjectsSettings& b) { return a.objects == b.objects && a.scatters == b.scatters; }
 
@@ -51,8 +54,17 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, GLenum 
 std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
     return {{"renderer/meshes/shaders/object_cull.glsl", {}},
             {"renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"}},
+            {"renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"}},
             {"renderer/meshes/shaders/object.glsl", {}},
             {"renderer/meshes/shaders/object.glsl", {"ALPHA_MASK"}},
+            {"renderer/meshes/shaders/object.glsl", {"IMPOSTOR_FADE"}},
+            {"renderer/meshes/shaders/object.glsl", {"IMPOSTOR_FADE", "ALPHA_MASK"}},
+            {"renderer/meshes/shaders/impostor.glsl", {}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_NAIVE"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_TILED"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_CLUSTERED"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_HASHED"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS", "ALPHA_MASK"}}};
 }
@@ -126,6 +138,9 @@ void Objects::upload(float) {
     counts_ = {};
     draws_ = {};
     vao_ = {};
+    impostors_.clear();
+    spheres_.clear();
+    baked_ = false;
     instance_count_ = 0;
     for (const auto& p : placed_) instance_count_ += p.size();
     stats_.models = models_.size();
@@ -135,7 +150,10 @@ void Objects::upload(float) {
     // One vertex and index array for every model (offsets applied per draw).
     std::vector<MeshVertex> vertices;
     std::vector<std::uint32_t> indices;
-    std::vector<std::uint32_t> vertex_base, index_base;
+    std::vector<std::uint32_t>& vertex_base = vertex_base_;
+    std::vector<std::uint32_t>& index_base = index_base_;
+    vertex_base.clear();
+    index_base.clear();
     for (const Model& m : models_) {
         vertex_base.push_back(std::uint32_t(vertices.size()));
         index_base.push_back(std::uint32_t(indices.size()));
@@ -143,6 +161,15 @@ void Objects::upload(float) {
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
         stats_.triangles += m.lods[0].triangles();
     }
+    // The impostor card: a unit quad in (right, up), uv from its lower left corner.
+    const std::uint32_t quad_vertex = std::uint32_t(vertices.size()), quad_index = std::uint32_t(indices.size());
+    for (int c = 0; c < 4; ++c) {
+        MeshVertex v;
+        v.uv = glm::vec2(float(c == 1 || c == 2), float(c >= 2));
+        v.position = glm::vec3(v.uv * 2.0f - 1.0f, 0.0f);
+        vertices.push_back(v);
+    }
+    for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(i);
     // The anchor: instances are stored relative to it in floats (camera-relative in the shaders).
     glm::dvec3 sum(0.0);
     for (const auto& list : placed_)
@@ -158,7 +185,8 @@ void Objects::upload(float) {
         const glm::vec3 centre = 0.5f * (model.bounds_min + model.bounds_max);
         float radius = 0.0f;
         for (const MeshVertex& v : model.vertices) radius = std::max(radius, glm::length(v.position - centre));
-        GpuModel g{glm::vec4(centre, radius), glm::uvec4(0), glm::uvec4(0)};
+        GpuModel g{glm::vec4(centre, radius), glm::uvec4(0), glm::uvec4(0), glm::uvec4(0)};
+        spheres_.push_back(g.sphere);
         const std::uint32_t n = std::uint32_t(placed_[m].size());
         for (int k = 0; k < 4; ++k) {
             g.region[k] = slot;
@@ -166,14 +194,16 @@ void Objects::upload(float) {
             const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
             g.triangles[k] = std::uint32_t(model.lods[std::size_t(lod)].triangles());
         }
+        g.impostor = glm::uvec4(slot, 2u, 0u, 0u);
+        slot += n;
         gpu_models.push_back(g);
         for (const PlacedObject& p : placed_[m])
             instances.push_back({glm::vec4(glm::vec3(p.position - anchor_), p.yaw_rad),
                                  glm::vec4(p.scale, float(m), radius * p.scale, 0.0f)});
     }
-    group_count_ = models_.size() * 4;
+    group_count_ = models_.size() * kObjectGroups;
 
-    // Indirect commands: per model, per group k (LOD 0..2, shadow), per primitive.
+    // Indirect commands: per model, per group k (LOD 0..2, shadow), per primitive; then its impostors.
     std::vector<DrawCommand> commands;
     for (std::size_t m = 0; m < models_.size(); ++m) {
         const Model& model = models_[m];
@@ -182,16 +212,24 @@ void Objects::upload(float) {
             for (const ModelPrimitive& p : model.lods[std::size_t(lod)].primitives) {
                 Draw d;
                 d.model = int(m);
-                d.group = int(m) * 4 + k;
+                d.group = int(m) * kObjectGroups + k;
                 d.material = p.material;
                 d.region = gpu_models[m].region[k];
                 d.offset = commands.size() * sizeof(DrawCommand);
-                d.shadow = k == 3;
+                d.shadow = k == kShadowGroup;
                 draws_list_.push_back(d);
                 commands.push_back({p.index_count, 0, index_base[m] + p.first_index, std::int32_t(vertex_base[m]),
                                     std::uint32_t(d.group)});
             }
         }
+        Draw d;
+        d.model = int(m);
+        d.group = int(m) * kObjectGroups + kImpostorGroup;
+        d.region = gpu_models[m].impostor.x;
+        d.offset = commands.size() * sizeof(DrawCommand);
+        d.impostor = true;
+        draws_list_.push_back(d);
+        commands.push_back({6, 0, quad_index, std::int32_t(quad_vertex), std::uint32_t(d.group)});
     }
 
     vertices_ = gl::Buffer::create(GLsizeiptr(vertices.size() * sizeof(MeshVertex)), vertices.data(), 0, "objects vertices");
@@ -244,6 +282,7 @@ void Objects::upload(float) {
             make(mat.occlusion_texture, false);
         }
     }
+    collectBlend();
     stats_.memory_bytes = std::size_t(vertices_.size() + indices_.size() + instances_.size() + models_buffer_.size() +
                                       visible_.size() + counts_.size() + draws_.size()) +
                           texture_bytes + white_.bytes() + flat_normal_.bytes();
@@ -272,6 +311,9 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             glProgramUniform4f(program, 2, s.lod1_distance_m, s.lod2_distance_m, s.max_distance_m,
                                s.cast_shadows ? s.shadow_distance_m : -1.0f);
             glProgramUniform1ui(program, 3, count ? 1u : 0u);
+            // Impostors only nearer than max_distance_m (else none: the fade band is empty too).
+            const float impostor = s.impostor_distance_m < s.max_distance_m ? s.impostor_distance_m : 2.0f * s.max_distance_m + 1.0f;
+            glProgramUniform2f(program, 9, impostor, s.impostor_fade_m);
             for (int p = 0; p < 5; ++p)
                 glProgramUniform4f(program, 4 + p, float(planes[std::size_t(p)].x), float(planes[std::size_t(p)].y),
                                    float(planes[std::size_t(p)].z), float(planes[std::size_t(p)].w));
@@ -282,7 +324,10 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             if (count) {
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "objects.instances"));
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "objects.triangles"));
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux2, counters.request(rc.frame, "objects.impostors"));
             }
+            // The shadow views drawn after this pass add their triangles to this frame's counter.
+            shadow_counter_ = count && s.cast_shadows ? counters.request(rc.frame, "objects.shadow_triangles") : 0;
             const std::uint64_t groups = (instance_count_ + 63) / 64;
             const std::uint64_t gx = std::min<std::uint64_t>(groups, 65535), gy = (groups + gx - 1) / gx;
             glDispatchCompute(GLuint(gx), GLuint(gy), 1);
@@ -297,47 +342,73 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
     return d.lists;
 }
 
-void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow) const {
+void Objects::setMaterial(GLuint program, int model_index, int material, float emissive_nits, bool shadow) const {
+    const ModelMaterial& mat = models_[std::size_t(model_index)].materials[std::size_t(material)];
+    glProgramUniform4f(program, 2, mat.base_color.r, mat.base_color.g, mat.base_color.b, mat.base_color.a);
+    glProgramUniform4f(program, 3, mat.metallic, mat.roughness, mat.normal_scale, mat.occlusion_strength);
+    const glm::vec3 e = mat.emissive * emissive_nits;
+    glProgramUniform4f(program, 4, e.r, e.g, e.b, mat.alpha_mode == AlphaMode::Blend ? 0.5f : mat.alpha_cutoff);
+    auto tex = [&](int image, bool srgb, GLuint fallback) {
+        if (image < 0) return fallback;
+        const int t = (srgb ? image_textures_ : image_linear_)[std::size_t(model_index)][std::size_t(image)];
+        return t >= 0 ? textures_[std::size_t(t)].id() : fallback;
+    };
+    glBindTextureUnit(binding::kTex0, tex(mat.base_color_texture, true, white_.id()));
+    if (!shadow) {
+        glBindTextureUnit(binding::kTex1, tex(mat.metallic_roughness_texture, false, white_.id()));
+        glBindTextureUnit(binding::kTex2, tex(mat.normal_texture, false, flat_normal_.id()));
+        glBindTextureUnit(binding::kTex3, tex(mat.occlusion_texture, false, white_.id()));
+        glBindTextureUnit(binding::kTex4, tex(mat.emissive_texture, true, white_.id()));
+    }
+    if (mat.double_sided) glDisable(GL_CULL_FACE);
+    else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    }
+}
+
+void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectsSettings* fade) const {
     const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
     for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
+    // The fade band before the impostors: the LODs whose distance range reaches into it dither.
+    float band_start = 0.0f, band_end = 0.0f;
+    if (fade && fade->impostor_fade_m > 0.0f && fade->impostor_distance_m < fade->max_distance_m) {
+        band_end = fade->impostor_distance_m;
+        band_start = std::max(0.0f, band_end - fade->impostor_fade_m);
+    }
     for (const Draw& d : draws_list_) {
-        if (d.shadow != shadow) continue;
+        if (d.shadow != shadow || d.impostor) continue;
         const Model& model = models_[std::size_t(d.model)];
         const ModelMaterial& mat = model.materials[std::size_t(d.material)];
-        const bool mask = mat.alpha_mode != AlphaMode::Opaque;  // BLEND drawn masked until a forward pass exists
+        if (mat.alpha_mode == AlphaMode::Blend) continue;  // objects.transparent draws it (no shadow: glass)
+        const bool mask = mat.alpha_mode == AlphaMode::Mask;
+        const int k = d.group % kObjectGroups;
+        float lod_near = 0.0f, lod_far = 1.0e30f;  // the distances the cull pass gives LOD k
+        if (fade) {
+            if (k == 0) lod_far = fade->lod1_distance_m;
+            if (k == 1) lod_near = fade->lod1_distance_m, lod_far = fade->lod2_distance_m;
+            if (k == 2) lod_near = fade->lod2_distance_m;
+        }
+        const bool fading = !shadow && band_end > band_start && lod_near < band_end && lod_far > band_start;
         std::vector<std::string> defines;
         if (shadow) defines.push_back("SHADOW_PASS");
+        if (fading) defines.push_back("IMPOSTOR_FADE");
         if (mask) defines.push_back("ALPHA_MASK");
         const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
         glUseProgram(program);
         glProgramUniform1ui(program, 0, d.region);
         glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
-        glProgramUniform4f(program, 2, mat.base_color.r, mat.base_color.g, mat.base_color.b, mat.base_color.a);
-        glProgramUniform4f(program, 3, mat.metallic, mat.roughness, mat.normal_scale, mat.occlusion_strength);
-        const glm::vec3 e = mat.emissive * emissive_nits_;
-        glProgramUniform4f(program, 4, e.r, e.g, e.b, mat.alpha_mode == AlphaMode::Blend ? 0.5f : mat.alpha_cutoff);
+        if (fading) {
+            const glm::vec4& sphere = spheres_[std::size_t(d.model)];
+            glProgramUniform4f(program, 5, band_start, 1.0f / (band_end - band_start), sphere.x, sphere.y);
+            glProgramUniform1f(program, 6, sphere.z);
+        }
         glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
-        auto tex = [&](int image, bool srgb, GLuint fallback) {
-            if (image < 0) return fallback;
-            const int t = (srgb ? image_textures_ : image_linear_)[std::size_t(d.model)][std::size_t(image)];
-            return t >= 0 ? textures_[std::size_t(t)].id() : fallback;
-        };
-        glBindTextureUnit(binding::kTex0, tex(mat.base_color_texture, true, white_.id()));
-        if (!shadow) {
-            glBindTextureUnit(binding::kTex1, tex(mat.metallic_roughness_texture, false, white_.id()));
-            glBindTextureUnit(binding::kTex2, tex(mat.normal_texture, false, flat_normal_.id()));
-            glBindTextureUnit(binding::kTex3, tex(mat.occlusion_texture, false, white_.id()));
-            glBindTextureUnit(binding::kTex4, tex(mat.emissive_texture, true, white_.id()));
-        }
-        if (mat.double_sided) glDisable(GL_CULL_FACE);
-        else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_BACK);
-        }
+        setMaterial(program, d.model, d.material, emissive_nits_, shadow);
         glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(d.offset));
     }
     glDisable(GL_CULL_FACE);
@@ -346,9 +417,132 @@ void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool sh
     glBindVertexArray(rc.empty_vao);
 }
 
-void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const { drawList(rc, matrix, true); }
+void Objects::drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const {
+    const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
+    const GLuint program = rc.shaders.get("renderer/meshes/shaders/impostor.glsl")->id();
+    glUseProgram(program);
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
+    for (int u = 0; u < 3; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
+    const float band_start = std::max(0.0f, s.impostor_distance_m - s.impostor_fade_m);
+    glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+    glProgramUniform4f(program, 5, band_start, 1.0f / std::max(s.impostor_distance_m - band_start, 1e-3f), float(kImpostorFrames),
+                       emissive_nits_);
+    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
+    glDisable(GL_CULL_FACE);
+    for (const Draw& d : draws_list_) {
+        if (!d.impostor) continue;
+        const Impostor& atlas = impostors_[std::size_t(d.model)];
+        const glm::vec4& sphere = spheres_[std::size_t(d.model)];
+        glProgramUniform1ui(program, 0, d.region);
+        glProgramUniform4f(program, 2, sphere.x, sphere.y, sphere.z, sphere.w);
+        glBindTextureUnit(binding::kTex0, atlas.emissive.id());
+        glBindTextureUnit(binding::kTex1, atlas.albedo.id());
+        glBindTextureUnit(binding::kTex2, atlas.normal.id());
+        glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(d.offset));
+    }
+    for (int u = 0; u < 3; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindVertexArray(rc.empty_vao);
+}
 
-void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, BufferHandle lists, SceneTargets& targets) {
+void Objects::bakeImpostors(const RenderContext& rc) {
+    if (baked_ || instance_count_ == 0) return;
+    baked_ = true;
+    const int side = kImpostorFrames * kImpostorFramePx;
+    // One instance at the origin, unturned and unscaled, so world space is model space.
+    struct Unit {
+        GpuInstance instance;
+        std::uint32_t visible[4];
+    };
+    gl::Texture depth = gl::Texture::create2D(side, side, GL_DEPTH_COMPONENT32F, 1, "impostor bake depth");
+    gl::Framebuffer fb = gl::createFramebuffer("impostor bake");
+    GLint old_viewport[4];
+    glGetIntegerv(GL_VIEWPORT, old_viewport);
+    glBindVertexArray(vao_.id());
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const Model& model = models_[m];
+        const glm::vec4 sphere = spheres_[m];
+        Impostor atlas;
+        atlas.emissive = gl::Texture::create2D(side, side, GL_RGBA8, kImpostorMipLevels, "impostor emissive");
+        atlas.albedo = gl::Texture::create2D(side, side, GL_RGBA8, kImpostorMipLevels, "impostor albedo");
+        atlas.normal = gl::Texture::create2D(side, side, GL_RGBA8, kImpostorMipLevels, "impostor normal");
+        glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0, atlas.emissive.id(), 0);
+        glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT1, atlas.albedo.id(), 0);
+        glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT2, atlas.normal.id(), 0);
+        glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glNamedFramebufferDrawBuffers(fb.id(), 3, buffers);
+        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+        glViewport(0, 0, side, side);
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (int b = 0; b < 3; ++b) glClearNamedFramebufferfv(fb.id(), GL_COLOR, b, zero);
+        const float far_depth = 0.0f;
+        glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &far_depth);
+        const Unit unit{{glm::vec4(0.0f), glm::vec4(1.0f, float(m), sphere.w, 0.0f)}, {0, 0, 0, 0}};
+        gl::Buffer instance = gl::Buffer::create(sizeof(GpuInstance), &unit.instance, 0, "impostor bake instance");
+        gl::Buffer visible = gl::Buffer::create(sizeof unit.visible, unit.visible, 0, "impostor bake list");
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instance.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible.id());
+        for (int j = 0; j < kImpostorFrames; ++j)
+            for (int i = 0; i < kImpostorFrames; ++i) {
+                glViewport(i * kImpostorFramePx, j * kImpostorFramePx, kImpostorFramePx, kImpostorFramePx);
+                const glm::mat4 matrix = impostorBakeMatrix(impostorFrameDirection(i, j), glm::vec3(sphere), sphere.w);
+                for (const ModelPrimitive& p : model.lods[0].primitives) {
+                    const ModelMaterial& mat = model.materials[std::size_t(p.material)];
+                    if (mat.alpha_mode == AlphaMode::Blend) continue;  // impostors show the opaque parts
+                    std::vector<std::string> defines;
+                    if (mat.alpha_mode != AlphaMode::Opaque) defines.push_back("ALPHA_MASK");
+                    const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+                    glUseProgram(program);
+                    glProgramUniform1ui(program, 0, 0u);
+                    glProgramUniform3f(program, 1, 0.0f, 0.0f, 0.0f);
+                    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
+                    setMaterial(program, int(m), p.material, 1.0f, false);  // emissive factor; x nits when drawn
+                    glDrawElementsInstancedBaseVertex(
+                        GL_TRIANGLES, GLsizei(p.index_count), GL_UNSIGNED_INT,
+                        reinterpret_cast<const void*>(std::size_t(index_base_[m] + p.first_index) * 4), 1, GLint(vertex_base_[m]));
+                }
+            }
+        glGenerateTextureMipmap(atlas.emissive.id());
+        glGenerateTextureMipmap(atlas.albedo.id());
+        glGenerateTextureMipmap(atlas.normal.id());
+        stats_.impostor_bytes += atlas.emissive.bytes() + atlas.albedo.bytes() + atlas.normal.bytes();
+        impostors_.push_back(std::move(atlas));
+    }
+    stats_.memory_bytes += stats_.impostor_bytes;
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(old_viewport[0], old_viewport[1], old_viewport[2], old_viewport[3]);
+    glBindVertexArray(rc.empty_vao);
+}
+
+void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const {
+    drawList(rc, matrix, true, nullptr);
+    if (shadow_counter_ == 0) return;
+    const GLuint program = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"})->id();
+    glUseProgram(program);
+    glProgramUniform1ui(program, 0, GLuint(models_.size()));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectModels, models_buffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectCounts, counts_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, shadow_counter_);
+    glDispatchCompute(GLuint((models_.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, BufferHandle lists,
+                             SceneTargets& targets) {
     struct DrawData {
         BufferHandle lists;
         SceneTargets t;
@@ -362,7 +556,10 @@ void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, BufferH
             data.t.normal = b.write(targets.normal);
             data.t.depth = b.write(targets.depth);
         },
-        [this, &rc](const DrawData& data, PassContext& ctx) {
+        [this, &rc, &s](const DrawData& data, PassContext& ctx) {
+            // Baked the first time impostors can be drawn (the atlas render binds its own target).
+            const bool impostors = s.impostor_distance_m < s.max_distance_m;
+            if (impostors) bakeImpostors(rc);
             const TextureDesc& desc = ctx.desc(data.t.hdr);
             GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
                                               ctx.texture(data.t.depth));
@@ -370,7 +567,8 @@ void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, BufferH
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
-            drawList(rc, rc.matrices.view_proj, false);
+            drawList(rc, rc.matrices.view_proj, false, &s);
+            if (impostors) drawImpostors(rc, s);
             glDisable(GL_DEPTH_TEST);
         });
     targets = d.t;

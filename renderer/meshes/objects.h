@@ -6,7 +6,9 @@
 //                     per-(model, LOD) lists and a shadow-caster list, then the indirect
 //                     commands' instance counts: the CPU's work does not grow with the instances;
 //   "objects.gbuffer" one indirect draw per (model, LOD, material) into the G-buffer, emissive
-//                     into the HDR target;
+//                     into the HDR target, and one per model of its octahedral impostors
+//                     (renderer/meshes/impostor.h: baked at the first frame that draws them)
+//                     beyond impostor_distance_m, dithered into the mesh over impostor_fade_m;
 // and drawShadow() draws the caster lists into the sun cascades and the spot atlas. Without
 // entries (or with [objects] off) the frame makes no Objects: no pass, no memory.
 #pragma once
@@ -30,10 +32,22 @@
 
 namespace vista {
 
+// The light a forward pass needs besides FrameUniforms (renderer/meshes cannot include the
+// lighting: the frame passes what its sun, sky and local lights give).
+struct ForwardLight {
+    glm::vec3 sun_irradiance{0.0f}, sky_up{0.0f}, ground_up{0.0f};  // as renderer/lighting/deferred.h SunAndSky
+    std::string lights_define;          // LocalLights::define() ("" without local lights)
+    std::function<void()> bind_lights;  // LocalLights::bindForForward()
+};
+// Transparent (instance, primitive) pairs sorted and drawn per frame at most (the nearest).
+constexpr std::size_t kMaxTransparentItems = 4096;
+
+// Lists per model (object_common.glsl OBJECT_GROUPS): LOD 0..2, shadow casters, impostors.
+constexpr int kObjectGroups = 5;
 // Bytes of one instance on the GPU (ObjectInstance in object_common.glsl) and of its list slots
-// (one per view LOD group it could join and one shadow slot).
+// (one per group it could join).
 constexpr std::size_t kObjectInstanceBytes = 32;
-constexpr std::size_t kObjectSlotBytes = 4 * 4;
+constexpr std::size_t kObjectSlotBytes = 4 * kObjectGroups;
 
 struct ObjectStats {
     std::size_t models = 0;
@@ -41,6 +55,7 @@ struct ObjectStats {
     std::uint64_t triangles = 0;    // of every model's full LOD
     std::size_t memory_bytes = 0;
     double place_ms = 0.0;          // CPU time of the last placement
+    std::size_t impostor_bytes = 0; // of the baked atlases (0 until baked)
 };
 
 // The world area scatter rules cover: [min, max] in x and z (the terrain's extent).
@@ -59,29 +74,56 @@ public:
     // so one caster handle orders the shadow passes after both). Returns the culled lists.
     BufferHandle addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, CounterReadback& counters,
                              bool count, BufferHandle after = {});
-    void addGbufferPass(FrameGraph& graph, const RenderContext& rc, BufferHandle lists, SceneTargets& targets);
-    // The shadow-caster list depth-only through matrix (camera-relative world -> clip).
+    void addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, BufferHandle lists,
+                        SceneTargets& targets);
+    // The shadow-caster list depth-only through matrix (camera-relative world -> clip); adds its
+    // triangles to objects.shadow_triangles when the cull pass counted.
     void drawShadow(const RenderContext& rc, const glm::mat4& matrix) const;
+    // Renders every model's impostor atlas (once; the cull pass's gbuffer pass calls it when
+    // impostors can be drawn). Public for the tests.
+    void bakeImpostors(const RenderContext& rc);
+    bool impostorsBaked() const { return baked_; }
+    // "objects.transparent" (renderer/meshes/objects_forward.cpp): the BLEND primitives, sorted
+    // back to front per (instance, primitive), forward lit and blended into targets.hdr after the
+    // sea. Adds nothing when no model has one.
+    void addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, const ForwardLight& light,
+                            SceneTargets& targets);
+    bool hasTransparent() const { return !blend_.empty(); }
+    std::size_t transparentDrawn() const { return transparent_drawn_; }      // this frame's sorted items
+    std::size_t transparentDropped() const { return transparent_dropped_; }  // beyond kMaxTransparentItems
+    void setSortTransparent(bool on) { sort_transparent_ = on; }  // tests: off draws in placement order
 
     const ObjectStats& stats() const { return stats_; }
     std::size_t memoryBytes() const { return stats_.memory_bytes; }
     const std::vector<Model>& models() const { return models_; }
     // Placed instances per model, in upload order (tests).
     const std::vector<std::vector<PlacedObject>>& placed() const { return placed_; }
-    GLuint countsBuffer() const { return counts_.id(); }  // uint per group (model * 4 + k), tests
+    GLuint countsBuffer() const { return counts_.id(); }  // uint per group (model * kObjectGroups + k), tests
 
 private:
     struct Draw {
         int model = 0, group = 0, material = 0;
         std::uint32_t region = 0;
         std::size_t offset = 0;  // bytes into draws_
-        bool shadow = false;
+        bool shadow = false, impostor = false;
+    };
+    struct Blend {
+        int model = 0;
+        ModelPrimitive primitive;
+        glm::vec3 centre{0.0f};  // model space, of the primitive's bounds
+        std::uint32_t first_instance = 0;  // the model's first instance in the upload order
+    };
+    void collectBlend();
+    struct Impostor {
+        gl::Texture emissive, albedo, normal;  // the G-buffer's encodings, kImpostorFrames^2 frames
     };
     struct Texture {
         gl::Texture texture;
     };
     void upload(float emissive_nits);
-    void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow) const;
+    void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectsSettings* fade) const;
+    void drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const;
+    void setMaterial(GLuint program, int model, int material, float emissive_nits, bool shadow) const;
 
     ObjectsSettings placed_for_;
     bool has_placement_ = false;
@@ -97,6 +139,15 @@ private:
     gl::Sampler sampler_;
     gl::Buffer vertices_, indices_, instances_, models_buffer_, visible_, counts_, draws_;
     gl::VertexArray vao_;
+    std::vector<Impostor> impostors_;  // per model, once baked
+    std::vector<glm::vec4> spheres_;   // per model: bounding sphere (centre, radius), model space
+    std::vector<std::uint32_t> vertex_base_, index_base_;
+    bool baked_ = false;
+    std::vector<Blend> blend_;
+    gl::Buffer forward_list_;  // this frame's sorted instance indices
+    bool sort_transparent_ = true;
+    std::size_t transparent_drawn_ = 0, transparent_dropped_ = 0;
+    GLuint shadow_counter_ = 0;        // this frame's objects.shadow_triangles buffer, 0: not counting
     std::size_t instance_count_ = 0, group_count_ = 0;
     float emissive_nits_ = 0.0f;
     ObjectStats stats_;

@@ -108,6 +108,10 @@ void describe(SettingsVisitor& v, ObjectsSettings& s) {
     v.field({"lod1_distance_m", "m", "the first simplified LOD beyond this distance"}, s.lod1_distance_m, 1.0f, 1.0e5f);
     v.field({"lod2_distance_m", "m", "the coarsest LOD beyond this distance"}, s.lod2_distance_m, 1.0f, 1.0e5f);
     v.field({"max_distance_m", "m", "instances farther from the camera are not drawn"}, s.max_distance_m, 1.0f, 1.0e6f);
+    v.field({"impostor_distance_m", "m", "an octahedral impostor (one textured quad, baked at load) replaces the mesh beyond this distance"},
+            s.impostor_distance_m, 1.0f, 1.0e6f);
+    v.field({"impostor_fade_m", "m", "the mesh dithers into the impostor over this band before impostor_distance_m"},
+            s.impostor_fade_m, 0.0f, 1.0e4f);
     v.field({"shadow_distance_m", "m", "instances within this distance cast shadows"}, s.shadow_distance_m, 0.0f, 1.0e5f);
     v.field({"cast_shadows", "", "objects cast into the sun cascades and the spot atlas"}, s.cast_shadows);
     v.field({"emissive_nits", "cd/m^2", "luminance of emissive factor 1 (glowing windows)"}, s.emissive_nits, 0.0f, 1.0e6f);

@@ -23,6 +23,7 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kLightHash == BINDING_LIGHT_HASH);
     CHECK(binding::kLightSpheres == BINDING_LIGHT_SPHERES);
     CHECK(binding::kAux == BINDING_AUX);
+    CHECK(binding::kAux2 == BINDING_AUX_2);
     CHECK(binding::kLightShadeDraw == BINDING_LIGHT_SHADE_DRAW);
     CHECK(binding::kShadowUniforms == BINDING_SHADOW_UNIFORMS);
     CHECK(binding::kShadowMap == BINDING_SHADOW_MAP);

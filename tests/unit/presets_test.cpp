@@ -69,9 +69,10 @@ TEST_CASE("presets: every knob of the table grows finer with the level, and get 
             }
         }
         // Depth of field, motion blur and the sea are off in Settings{} (default.ini turns the sea
-        // on): their knobs change nothing there.
+        // on), and it places no objects (default.ini does): their knobs change nothing there.
         const std::string_view name = k.name;
-        const bool off_by_default = name == "dof.samples" || name == "motion_blur.samples" || name.rfind("water.", 0) == 0;
+        const bool off_by_default = name == "dof.samples" || name == "motion_blur.samples" || name.rfind("water.", 0) == 0 ||
+                                    name.rfind("objects.", 0) == 0;
         CHECK(k.active(scene) == !off_by_default);
     }
     CHECK_FALSE(findQualityKnob("terrain.height_scale_m"));

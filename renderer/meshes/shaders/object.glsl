@@ -6,7 +6,12 @@
 // target, which the lighting adds to. Missing textures are 1 x 1 defaults (white, flat normal),
 // so there is no branch per texture. ALPHA_MASK: alpha below the cutoff is discarded (foliage;
 // BLEND materials too, at their cutoff, until the forward pass exists). SHADOW_PASS: depth only
-// into a shadow view (with the alpha test when ALPHA_MASK).
+// into a shadow view (with the alpha test when ALPHA_MASK). IMPOSTOR_FADE: the draws of LODs
+// that reach into the fade band before the impostor distance drop the pixels the impostor draws
+// (object_common.glsl impostorFade); a variant, so the other draws pay nothing. FORWARD: BLEND
+// materials in "objects.transparent", sorted back to front on the CPU: lit here by the sun, the
+// hemisphere ambient and the local lights' forward lists (LIGHTS_NAIVE, _TILED, _CLUSTERED or
+// _HASHED, as the sea), written premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA).
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "object_common.glsl"
@@ -19,6 +24,11 @@ layout(location = 1) uniform vec3 u_camera;       // camera relative to the anch
 layout(location = 2) uniform vec4 u_base_color;   // linear RGBA factor
 layout(location = 3) uniform vec4 u_material;     // metallic, roughness, normal scale, occlusion strength
 layout(location = 4) uniform vec4 u_emissive;     // rgb emissive factor x nits, w alpha cutoff
+layout(location = 5) uniform vec4 u_fade;         // IMPOSTOR_FADE: band start (m), 1 / band width (1/m), model-space sphere centre xy ...
+layout(location = 6) uniform float u_fade_centre_z;  // ... and z
+layout(location = 7) uniform vec3 u_sun_irradiance;  // FORWARD: the sun at normal incidence (HDR units)
+layout(location = 8) uniform vec3 u_sky_up;          // FORWARD: sky irradiance on an up-facing surface
+layout(location = 9) uniform vec3 u_ground_up;       // FORWARD: ground bounce on a down-facing surface
 layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
 
 #ifdef VERTEX_SHADER
@@ -31,6 +41,9 @@ out vec2 v_uv;
 out vec3 v_normal;
 out vec4 v_tangent;
 out vec3 v_position;  // camera-relative
+#endif
+#ifdef IMPOSTOR_FADE
+flat out float v_fade;
 #endif
 
 void main() {
@@ -45,11 +58,23 @@ void main() {
     v_tangent = vec4(objectTransform(unit, a_tangent.xyz), a_tangent.w);
     v_position = p;
 #endif
+#ifdef IMPOSTOR_FADE
+    vec3 centre = inst.position_yaw.xyz - u_camera + objectTransform(inst, vec3(u_fade.zw, u_fade_centre_z));
+    v_fade = impostorFade(length(centre), u_fade.xy);
+#endif
     gl_Position = u_matrix * vec4(p, 1.0);
 }
 #endif
 
 #ifdef FRAGMENT_SHADER
+#include "../../../renderer/lighting/shaders/brdf.glsl"
+// Shared by lights.glsl; included first and unconditionally because each file is expanded once,
+// before the GLSL preprocessor sees the #ifs around them (as water_surface.glsl does).
+#include "../../../renderer/shadows/shaders/shadow_filter.glsl"
+#if defined(FORWARD) && (defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED))
+#define OBJECT_LOCAL_LIGHTS
+#include "../../../renderer/lighting/shaders/lights.glsl"
+#endif
 layout(binding = BINDING_TEX_0) uniform sampler2D t_base_color;
 in vec2 v_uv;
 
@@ -67,11 +92,21 @@ layout(binding = BINDING_TEX_4) uniform sampler2D t_emissive;
 in vec3 v_normal;
 in vec4 v_tangent;
 in vec3 v_position;
+#ifdef IMPOSTOR_FADE
+flat in float v_fade;
+#endif
+#ifdef FORWARD
+layout(location = 0) out vec4 o_color;  // premultiplied radiance, coverage
+#else
 layout(location = 0) out vec4 o_color;  // emissive radiance
 layout(location = 1) out vec4 o_albedo;
 layout(location = 2) out vec4 o_normal;
+#endif
 
 void main() {
+#ifdef IMPOSTOR_FADE
+    if (impostorFadeNoise(gl_FragCoord.xy) < v_fade) discard;
+#endif
     vec4 base = u_base_color * texture(t_base_color, v_uv);
 #ifdef ALPHA_MASK
     if (base.a < u_emissive.w) discard;
@@ -102,8 +137,28 @@ void main() {
     s.normal = n;
     s.f0 = mix(0.04, 0.16, metallic);
     s.lit = true;
+    vec3 emissive = u_emissive.rgb * texture(t_emissive, v_uv).rgb;
+#ifdef FORWARD
+    // Premultiplied: the diffuse part scales with coverage, reflections do not (glass).
+    float alpha = clamp(base.a, 0.0, 1.0);
+    s.albedo *= alpha;
+    vec3 v = safeNormalize(-v_position);
+    vec3 l = u_sun_dir.xyz;
+    vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, n, l, v) * u_sun_irradiance * max(dot(n, l), 0.0);
+    float nv = clamp(dot(n, v), 0.0, 1.0);
+    float fr = s.f0 + (1.0 - s.f0) * pow(1.0 - nv, 5.0) * (1.0 - s.roughness);
+    vec3 r = reflect(-v, n);
+    color += (1.0 - fr) * s.albedo / PI * mix(u_ground_up, u_sky_up, n.y * 0.5 + 0.5) +
+             fr / PI * mix(u_ground_up, u_sky_up, r.y * 0.5 + 0.5);
+#ifdef OBJECT_LOCAL_LIGHTS
+    uint evaluated, exact;
+    color += forwardLocalLights(s, v_position, ivec2(gl_FragCoord.xy), evaluated, exact);
+#endif
+    o_color = vec4(color + emissive, alpha);
+#else
     encodeSurface(s, o_albedo, o_normal);
-    o_color = vec4(u_emissive.rgb * texture(t_emissive, v_uv).rgb, 1.0);
+    o_color = vec4(emissive, 1.0);
+#endif
 }
 #endif
 #endif
