@@ -195,7 +195,7 @@ int runQuality(const QualityOptions& o) {
             ErrorAccumulator single;
             single.addLdr(sequence.front().ldr, converged, c.width, c.height);
             temporal.single_psnr_db = single.result().psnr_db;
-            temporal.cut_psnr_db = renderCutCurve(renderer, spec.settings, first_view, first_t, converged, o.temporal);
+            temporal.cut_psnr_db = renderCutCurve(renderer, spec.settings, first_view, first_t, exposure_scale, converged, o.temporal);
             if (!temporal.cut_psnr_db.empty()) {
                 temporal.ghost_frames = framesUntilConverged(temporal.cut_psnr_db, 1.0);
                 temporal.converged_psnr_db = temporal.cut_psnr_db.back();

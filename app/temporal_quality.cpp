@@ -9,6 +9,16 @@
 
 namespace vista {
 
+namespace {
+
+void fixExposure(Settings& s, double exposure_scale) {
+    if (exposure_scale <= 0.0) return;
+    s.exposure.mode = ExposureMode::Manual;
+    s.exposure.ev = float(std::clamp(std::log2(exposure_scale), -20.0, 20.0));
+}
+
+}  // namespace
+
 std::vector<unsigned char> renderConvergedReference(FrameRenderer& renderer, Settings s, const ViewParams& view,
                                                     double time_s, double exposure_scale,
                                                     const TemporalQualityOptions& o) {
@@ -18,10 +28,7 @@ std::vector<unsigned char> renderConvergedReference(FrameRenderer& renderer, Set
     // exponential history would keep the first frames' error and TAA would jitter on its own).
     s.taa.enabled = false;
     s.clouds.temporal = false;
-    if (exposure_scale > 0.0) {
-        s.exposure.mode = ExposureMode::Manual;
-        s.exposure.ev = float(std::clamp(std::log2(exposure_scale), -20.0, 20.0));
-    }
+    fixExposure(s, exposure_scale);
     ViewParams big = view;
     big.width = view.width * factor;
     big.height = view.height * factor;
@@ -39,10 +46,13 @@ std::vector<unsigned char> renderConvergedReference(FrameRenderer& renderer, Set
     return image.result();
 }
 
-std::vector<double> renderCutCurve(FrameRenderer& renderer, const Settings& s, const ViewParams& view, double time_s,
-                                   const std::vector<unsigned char>& converged, const TemporalQualityOptions& o) {
+
+std::vector<double> renderCutCurve(FrameRenderer& renderer, Settings s, const ViewParams& view, double time_s,
+                                   double exposure_scale, const std::vector<unsigned char>& converged,
+                                   const TemporalQualityOptions& o) {
     std::vector<double> curve;
     if (converged.empty() || o.cut_frames <= 0) return curve;
+    fixExposure(s, exposure_scale);
     std::vector<unsigned char> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;

@@ -21,8 +21,10 @@ std::vector<unsigned char> renderConvergedReference(FrameRenderer& renderer, Set
 
 // The camera-cut sequence: resetHistory(), settle_frames frames at `view` turned 180 degrees,
 // then cut_frames frames at `view`; returns each of those frames' LDR PSNR against `converged`.
-std::vector<double> renderCutCurve(FrameRenderer& renderer, const Settings& settings, const ViewParams& view,
-                                   double time_s, const std::vector<unsigned char>& converged,
+// exposure_scale > 0 fixes the exposure (manual) at the run's own: time stands still here, so
+// auto exposure would keep the turned-away view's metering and hide the history's convergence.
+std::vector<double> renderCutCurve(FrameRenderer& renderer, Settings settings, const ViewParams& view, double time_s,
+                                   double exposure_scale, const std::vector<unsigned char>& converged,
                                    const TemporalQualityOptions& options);
 
 }  // namespace vista
