@@ -203,22 +203,40 @@ int capture(const SceneOptions& scene, const CaptureOptions& opts) {
 
 struct QualityCliOptions {
     std::string path, size, out, knobs, backend = "osmesa";
-    int frames = 2, warmup = 1;
+    int frames = 2, warmup = -1;  // warm-up -1: [capture] settle_frames
     double fps = 0.0;
+    TemporalQualityOptions temporal;
+    bool bench = false;  // `vista bench temporal`: the reference and the scene as given
+    std::string reference_preset = "reference";
 
-    void add(CLI::App* cmd, SceneOptions& scene) {
+    void add(CLI::App* cmd, SceneOptions& scene, bool bench_temporal = false) {
+        bench = bench_temporal;
         cmd->add_option("-c,--config", scene.configs, "scene file (default: config/default.ini); may repeat")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd->add_option("--set", scene.overrides, "override a scene key: --set section.key=value (repeatable)");
         cmd->add_option("--path", path, "camera path file (default: [capture] path)");
         cmd->add_option("--frames", frames, "measured frames per run (default 2)")->check(kDecimal)->check(CLI::Range(1, 10000));
-        cmd->add_option("--warmup", warmup, "frames rendered before measuring each run (default 1)")->check(kDecimal)->check(CLI::Range(0, 1000));
-        cmd->add_option("--fps", fps, "frames per second of path time (default: [capture] fps)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
+        cmd->add_option("--warmup", warmup, "settle frames rendered before measuring each run (default: [capture] settle_frames)")
+            ->check(kDecimal)->check(CLI::Range(0, 1000));
+        cmd->add_option("--fps", fps, "frames per second of path time (default 24: consecutive frames of a slow camera)")->check(kFinite)->check(CLI::Range(0.01, 1000.0));
         cmd->add_option("--size", size, "image size WxH (default: [capture] width x height)");
-        cmd->add_option("--out", out, "output directory (default: [capture] out/quality; the report files are replaced)");
+        cmd->add_option("--out", out, std::string("output directory (default: [capture] out/") +
+                                          (bench ? "bench_temporal" : "quality") + "; the report files are replaced)");
         cmd->add_option("--backend", backend, "GL context: osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
-        cmd->add_option("--knobs", knobs, "comma-separated knobs to sweep, or none for the presets alone (default: all)");
+        if (bench)
+            cmd->add_option("--reference-preset", reference_preset,
+                            "the preset whose frames are the reference (default reference; a cheaper one for quick checks)")
+                ->check(CLI::IsMember({"low", "medium", "high", "ultra", "reference"}));
+        else
+            cmd->add_option("--knobs", knobs, "comma-separated knobs to sweep, or none for the presets alone (default: all)");
+        cmd->add_option("--converge-frames", temporal.converge_frames,
+                        "history-free frames averaged into the converged reference (default 16; 0: no 1-frame and ghost figures)")
+            ->check(kDecimal)->check(CLI::Range(0, 4096));
+        cmd->add_option("--supersample", temporal.supersample, "the converged reference's size factor (default 2)")
+            ->check(kDecimal)->check(CLI::Range(1, 8));
+        cmd->add_option("--cut-frames", temporal.cut_frames, "frames rendered after the camera cut (default 16; 0: no ghost figure)")
+            ->check(kDecimal)->check(CLI::Range(0, 1000));
     }
 };
 
@@ -227,12 +245,18 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
     if (!scene.load(o.scene)) return 2;
     CaptureSettings& c = o.scene.capture;
     if (!q.path.empty()) c.path = q.path;
-    if (q.fps > 0.0) c.fps = float(q.fps);
+    // Consecutive frames of a real frame rate by default: flicker and TAA need a slow camera
+    // (the default scene's capture rate, 0.2 fps, makes every frame a camera cut).
+    c.fps = q.fps > 0.0 ? float(q.fps) : 24.0f;
     if (!q.size.empty() && !parseSize(q.size, c.width, c.height)) return 2;
     o.scene_name = scene.configs.empty() ? "config/default.ini" : scene.configs.back();
     o.frames = q.frames;
-    o.warmup = q.warmup;
-    o.out = q.out.empty() ? std::filesystem::path(c.out) / "quality" : std::filesystem::path(q.out);
+    o.warmup = q.warmup >= 0 ? q.warmup : c.settle_frames;
+    o.temporal = q.temporal;
+    o.temporal.settle_frames = o.warmup;
+    o.bench = q.bench;
+    o.reference_preset = *qualityPresetFromName(q.reference_preset);
+    o.out = q.out.empty() ? std::filesystem::path(c.out) / (q.bench ? "bench_temporal" : "quality") : std::filesystem::path(q.out);
     o.backend = q.backend == "egl" ? Backend::Egl : Backend::OSMesa;
     if (!q.knobs.empty()) {
         o.all_knobs = false;
@@ -445,6 +469,11 @@ int runCommand(int argc, char** argv) {
     CLI::App* quality_cmd = app.add_subcommand(
         "quality", "image error against the reference beside GPU time for every preset and quality knob");
     quality_opts.add(quality_cmd, quality_scene);
+    SceneOptions temporal_scene;
+    QualityCliOptions temporal_opts;
+    CLI::App* bench_temporal = bench_cmd->add_subcommand(
+        "temporal", "temporal error of the scene as given: 1-frame PSNR against a converged reference, flicker, frames after a cut");
+    temporal_opts.add(bench_temporal, temporal_scene, /*bench_temporal=*/true);
 
     // Farm: video from finished frames, merging shards, Slurm job arrays (app/farm.h).
     EncodeOptions encode_opts;
@@ -525,6 +554,7 @@ int runCommand(int argc, char** argv) {
     }
     if (*check_cmd) return check(check_scene);
     if (*quality_cmd) return quality(quality_scene, quality_opts);
+    if (*bench_temporal) return quality(temporal_scene, temporal_opts);
     if (*gen_cmd) return runGenHeightmap(gen_size, gen_seed, gen_out, gen_force);
     if (*cache_cmd) return runTerrainCache(cache_opts);
     if (*props_cmd) return runGenProps(props_out, props_seed, props_force);

@@ -8,6 +8,7 @@
 #include "renderer/debug_view.h"
 #include "renderer/nonfinite.h"
 #include "renderer/reference_copy.h"
+#include "renderer/velocity.h"
 #include "renderer/temporal.h"
 #include "app/light_placement.h"
 #include "app/scene.h"
@@ -63,6 +64,7 @@ std::vector<ProgramKey> allPrograms() {
     }
     for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : taaPrograms()) programs.push_back({file, defines});
+    for (auto& [file, defines] : velocityPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
     for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
@@ -366,6 +368,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     // A camera cut (or time running backwards: a new run) rejects every history this frame.
     const bool cut = !has_last_view_ || time_s < last_time_s_ ||
                      cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
+    const ViewParams previous_view = cut ? view : last_view_;  // the motion vectors' previous camera
     last_view_ = view;
     last_time_s_ = time_s;
     has_last_view_ = true;
@@ -537,9 +540,15 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     } else {
         weather_.reset();
     }
+    // The frame's motion vectors from the camera's motion since the previous frame (none on a cut).
+    TextureHandle velocity;
+    if ((taa || request.velocity) && scene.depth.valid())
+        velocity = addVelocityPass(graph, rc, scene.depth, previous_view);
+    if (request.velocity && velocity.valid())
+        addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);
     if (taa) {
         if (!taa_) taa_ = std::make_unique<TemporalAA>();
-        scene.hdr = taa_->addPass(graph, rc, scene.hdr, scene.depth, s.taa, cut);
+        scene.hdr = taa_->addPass(graph, rc, scene.hdr, scene.depth, velocity, s.taa, cut);
         report.counters["postfx.taa.history_frames"] = double(taa_->historyFrames());
     }
     if (clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());

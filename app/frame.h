@@ -60,6 +60,8 @@ struct FrameRequest {
                                                    // first ("lights.heat_readback"); untouched without local lights
     std::vector<float>* depth = nullptr;           // reversed-Z depth (0: sky), one float a pixel, top row first
                                                    // ("capture.depth_readback"; bench lights classes pixels by it)
+    std::vector<float>* velocity = nullptr;        // motion vectors (renderer/velocity.h), RGBA floats, top row first
+                                                   // ("temporal.velocity_readback"; adds "temporal.velocity" without TAA)
     std::string* graph_dot = nullptr;              // receives the compiled graph (Graphviz)
     const ViewParams* shadow_fit_view = nullptr;   // fit the sun cascades to this camera, not the view's (bench shadows)
     // The frame's index in its sequence (capture: the path frame k, negative for settle frames

@@ -1,10 +1,14 @@
 // `vista quality`: renders the same camera-path frames at every preset (low, medium, high,
 // ultra, reference) and, for each quality knob the scene uses, at each preset value of that
 // knob with everything else at the reference; reports error against the reference beside GPU
-// time (app/quality_report.h) into --out.
+// time (app/quality_report.h) into --out, and the temporal error of each run (single-frame PSNR
+// against a converged, supersampled reference, flicker, frames to converge after a cut).
+// `vista bench temporal` is the same runner with two runs: the reference and the scene as given.
 #pragma once
 
 #include "app/gl_context.h"
+#include "app/temporal_metrics.h"
+#include "config/presets.h"
 #include "config/settings.h"
 
 #include <filesystem>
@@ -17,12 +21,15 @@ struct QualityOptions {
     Settings scene;                // the scene, [capture] path/fps/size already from the command line
     std::string scene_name;        // for the report
     int frames = 2;                // measured frames per run
-    int warmup = 1;                // frames rendered first at the path's first pose, not measured
+    int warmup = 8;                // settle frames rendered first at the path's first pose, not measured
     std::filesystem::path out;     // output directory
     Backend backend = Backend::OSMesa;
     bool all_knobs = true;         // false: only `knobs` (empty: presets only)
     std::vector<std::string> knobs;
     bool progress = true;
+    TemporalQualityOptions temporal;  // the temporal columns (docs/temporal.md, "Temporal error")
+    bool bench = false;               // `vista bench temporal`: the reference and the scene as given, no knobs
+    QualityPreset reference_preset = QualityPreset::Reference;  // bench temporal --reference-preset
 };
 
 // Names of the knobs a --knobs list may give (qualityKnobs()), comma-separated, for messages.

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 namespace vista {
@@ -44,6 +45,7 @@ void markParetoFront(QualityReport& r) {
 }
 
 std::string formatDb(double db) {
+    if (std::isnan(db)) return "-";  // not measured
     if (std::isinf(db)) return db > 0 ? "inf" : "-inf";
     char s[32];
     std::snprintf(s, sizeof s, "%.2f", db);
@@ -76,6 +78,18 @@ const char* kMetricHeader =
     "PSNR dB | SSIM | max err (levels) | HDR PSNR dB | HDR SSIM | HDR max err (stops) | GPU ms | copies | Pareto | gap dB |";
 const char* kMetricRule = "---:|---:|---:|---:|---:|---:|---:|---:|:---:|---:|";
 
+// The run's flicker over the reference run's (the reference sequence); NaN without a reference figure.
+double flickerRatio(const QualityReport& r, const QualityRun& run) {
+    const double ref = r.runs.empty() ? 0.0 : r.runs.front().temporal.flicker.mean;
+    return ref > 0.0 ? run.temporal.flicker.mean / ref : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::string temporalCsvCells(const QualityReport& r, const QualityRun& run) {
+    const TemporalFigures& t = run.temporal;
+    return formatDb(t.single_psnr_db) + "," + formatDb(t.converged_psnr_db) + "," + fmt("%.3f", t.flicker.mean) + "," +
+           fmt("%.2f", t.flicker.p99) + "," + fmt("%.3f", flickerRatio(r, run)) + "," + std::to_string(t.ghost_frames);
+}
+
 }  // namespace
 
 std::string QualityReport::incompleteNote() const {
@@ -88,13 +102,14 @@ std::string qualityCsv(const QualityReport& r) {
     std::string out = r.complete() ? std::string() : "# " + r.incompleteNote() + "\n";
     out +=
         "name,kind,knob,value,psnr_ldr_db,ssim_ldr,max_err_ldr,psnr_hdr_db,ssim_hdr,max_err_hdr_stops,gpu_ms_median,"
-        "cpu_ms_median,reference_copy_ms,copies,pareto,front_gap_db\n";
+        "cpu_ms_median,reference_copy_ms,copies,pareto,front_gap_db,single_frame_psnr_db,converged_psnr_db,flicker_mean,"
+        "flicker_p99,flicker_ratio,ghost_frames\n";
     for (const QualityRun& run : r.runs) {
         out += run.name + "," + run.kind + "," + run.knob + "," + run.value + "," + formatDb(run.ldr.psnr_db) + "," +
                fmt("%.6f", run.ldr.ssim) + "," + fmt("%.1f", run.ldr.max_error) + "," + formatDb(run.hdr.psnr_db) + "," +
                fmt("%.6f", run.hdr.ssim) + "," + fmt("%.4f", run.hdr.max_error) + "," + fmt("%.3f", run.gpu_ms) + "," +
                fmt("%.3f", run.cpu_ms) + "," + fmt("%.4f", run.copy_ms) + "," + fmt("%.2f", run.copies()) + "," +
-               (run.pareto ? "1" : "0") + "," + formatDb(run.front_gap_db) + "\n";
+               (run.pareto ? "1" : "0") + "," + formatDb(run.front_gap_db) + "," + temporalCsvCells(r, run) + "\n";
     }
     return out;
 }
@@ -125,13 +140,34 @@ std::string qualityMarkdown(const QualityReport& r, bool chart_has_labels) {
           "below the best run that costs no more.\n\n";
     md += "## Presets\n\n| preset | " + std::string(kMetricHeader) + "\n|---|" + kMetricRule + "\n";
     for (const QualityRun& run : r.runs)
-        if (run.kind == "preset") md += "| " + run.name + " | " + metricCells(run) + "\n";
+        if (run.kind == "preset" || run.kind == "scene") md += "| " + run.name + " | " + metricCells(run) + "\n";
+
+    const TemporalQualityOptions& to = r.temporal;
+    md += "\n## Temporal error\n\n1-frame: LDR PSNR of the first measured frame (after the warm-up frames, as a "
+          "capture's first frame after its settle frames) against a converged, supersampled reference of that frame: the "
+          "reference's settings with its exposure, the mean of " + std::to_string(to.converge_frames) +
+          " history-free frames (TAA and temporal clouds off, a different blue-noise index each) at " +
+          std::to_string(to.supersample) + "x the size, averaged in linear light. Converged: the same after " +
+          std::to_string(to.cut_frames) + " frames of a still camera following a camera cut. Flicker: mean and 99th "
+          "percentile of the per-pixel luma change (8-bit levels) between consecutive measured frames after "
+          "reprojecting the previous frame by depth (occluded and off-screen pixels left out); x reference: over the "
+          "reference run's (the reference sequence). Ghost: frames after a cut (from " + std::to_string(to.settle_frames) +
+          " frames of the view turned 180 degrees; 0 is the cut frame) until the image stays within 1 dB of its converged "
+          "PSNR.\n\n| run | 1-frame dB | converged dB | flicker mean | flicker p99 | x reference | ghost frames | copies |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const QualityRun& run : r.runs) {
+        const TemporalFigures& t = run.temporal;
+        md += "| " + run.name + " | " + formatDb(t.single_psnr_db) + " | " + formatDb(t.converged_psnr_db) + " | " +
+              fmt("%.2f", t.flicker.mean) + " | " + fmt("%.1f", t.flicker.p99) + " | " + fmt("%.2f", flickerRatio(r, run)) +
+              " | " + (t.ghost_frames < 0 ? std::string("-") : std::to_string(t.ghost_frames)) + " | " +
+              fmt("%.1f", run.copies()) + " |\n";
+    }
 
     // Per-pass times of the presets.
     std::vector<const QualityRun*> presets;
     std::vector<std::string> passes;
     for (const QualityRun& run : r.runs)
-        if (run.kind == "preset") {
+        if (run.kind == "preset" || run.kind == "scene") {
             presets.push_back(&run);
             for (const PassSummary& p : run.passes)
                 if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
@@ -264,7 +300,7 @@ std::string writeQualityChart(const std::filesystem::path& file, const QualityRe
                          ax.x(std::max(front[i]->gpu_ms, 1e-3)), ax.y(front[i]->ldr.psnr_db), black);
     int preset = 0;
     for (const QualityRun& run : r.runs)
-        if (run.kind == "preset") {
+        if (run.kind == "preset" || run.kind == "scene") {
             const float* color = kPresetColors[std::size_t(std::min(preset++, 4))].data();
             const int x = ax.x(std::max(run.gpu_ms, 1e-3)), y = ax.y(run.ldr.psnr_db);
             IBA::render_box(img, x - 5, y - 5, x + 5, y + 5, OIIO::cspan<float>(color, 3), true);

@@ -6,6 +6,7 @@
 
 #include "app/image_metrics.h"
 #include "app/stats.h"
+#include "app/temporal_metrics.h"
 
 #include <filesystem>
 #include <string>
@@ -24,6 +25,7 @@ struct QualityRun {
     std::vector<PassSummary> passes;    // medians, in execution order
     bool pareto = false;                // on the front of (gpu_ms, -psnr ldr)
     double front_gap_db = 0.0;          // best LDR PSNR of any run at no more gpu_ms, minus this run's (0: on the front)
+    TemporalFigures temporal;           // single-frame PSNR, flicker, frames to converge after a cut
 
     double copies() const { return copy_ms > 0.0 ? gpu_ms / copy_ms : 0.0; }
 };
@@ -35,6 +37,7 @@ struct QualityReport {
     std::vector<QualityRun> runs;            // presets first (reference among them), then knobs in table order
     std::vector<std::string> inactive_knobs;  // knobs whose feature the scene does not use (no runs)
     std::vector<std::string> knob_order;     // knob names with runs, in table order
+    TemporalQualityOptions temporal;         // how the temporal figures were measured
     int planned_runs = 0;                    // runs this report will hold; fewer: it is marked incomplete
 
     // False while runs are missing: the files written after each run say so, and a killed

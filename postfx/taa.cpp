@@ -1,8 +1,7 @@
-// TAA: the CPU keeps the previous camera and the ping-ponged history, decides when history is
-// usable, builds the reprojection in double (postfx/motion_blur.h) and adds one pass.
+// TAA: the CPU keeps the ping-ponged history, decides when history is usable and adds one
+// pass; where each pixel was in the previous frame comes from the frame's motion vectors.
 #include "postfx/taa.h"
 
-#include "postfx/motion_blur.h"
 #include "renderer/bindings.h"
 #include "renderer/temporal.h"
 
@@ -27,7 +26,7 @@ std::size_t TemporalAA::memoryBytes() const {
 }
 
 TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, TextureHandle depth,
-                                  const TaaSettings& s, bool cut) {
+                                  TextureHandle velocity, const TaaSettings& s, bool cut) {
     const int w = rc.view.width, h = rc.view.height;
     if (colour_[0].width() != w || colour_[0].height() != h) {
         release(rc.device);
@@ -41,8 +40,6 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
     }
     const bool history = valid_ && !cut;
     frames_ = history ? frames_ + 1 : 1;
-    const glm::mat4 reproject(history ? reprojectionMatrix(previous_, rc.view) : glm::dmat4(1.0));
-    previous_ = rc.view;
     valid_ = true;
     const int read = current_, write = 1 - current_;
     current_ = write;
@@ -51,7 +48,7 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
     const float disocclusion = s.disocclusion;
 
     struct Data {
-        TextureHandle image, depth, history, prev_depth, out, new_history, new_depth;
+        TextureHandle image, depth, velocity, history, prev_depth, out, new_history, new_depth;
     };
     const TextureHandle history_in = graph.importTexture("taa.history", {w, h, PixelFormat::RGBA16F}, colour_[read].id());
     const TextureHandle depth_in = graph.importTexture("taa.depth", {w, h, PixelFormat::R32F}, depth_[read].id());
@@ -61,19 +58,19 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
         [&](PassBuilder& b, Data& d) {
             d.image = b.read(image);
             d.depth = b.read(depth);
+            d.velocity = b.read(velocity);
             d.history = b.read(history_in);
             d.prev_depth = b.read(depth_in);
             d.out = b.write(b.create("taa.out", {w, h, PixelFormat::RGBA16F}));
             d.new_history = b.write(history_out);
             d.new_depth = b.write(depth_out);
         },
-        [&rc, reproject, jitter, params, disocclusion](const Data& d, PassContext& ctx) {
+        [&rc, jitter, params, disocclusion](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.new_history), ctx.texture(d.new_depth)}),
                        desc.width, desc.height);
             const GLuint program = rc.shaders.get("postfx/shaders/taa.glsl")->id();
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
             glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
             glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
             glProgramUniform1f(program, 3, disocclusion);
@@ -81,6 +78,7 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
             glBindTextureUnit(binding::kTex1, ctx.texture(d.depth));
             glBindTextureUnit(binding::kTex2, ctx.texture(d.history));
             glBindTextureUnit(binding::kTex3, ctx.texture(d.prev_depth));
+            glBindTextureUnit(binding::kTex4, ctx.texture(d.velocity));
             drawFullscreen(rc);
         }).out;
 }

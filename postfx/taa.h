@@ -23,10 +23,11 @@ class TemporalAA {
 public:
     // The sub-pixel jitter of the frame with this temporal index, in pixels.
     static glm::dvec2 jitterPx(std::uint64_t index);
-    // Resolves image (rendered with rc.jitter_ndc) against the history; returns the image for
-    // the post chain. cut: drop the history.
+    // Resolves image (rendered with rc.jitter_ndc) against the history, found through the
+    // frame's motion vectors (velocity: renderer/velocity.h); returns the image for the post
+    // chain. cut: drop the history.
     TextureHandle addPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, TextureHandle depth,
-                          const TaaSettings& s, bool cut);
+                          TextureHandle velocity, const TaaSettings& s, bool cut);
     void reset() { valid_ = false; }
     // Tells the device its history textures are going (it caches framebuffers by texture name);
     // call before destroying this object.
@@ -40,7 +41,6 @@ private:
     int current_ = 0;
     int frames_ = 0;
     bool valid_ = false;
-    ViewParams previous_;
 };
 
 std::vector<std::pair<std::string, std::vector<std::string>>> taaPrograms();

@@ -1,7 +1,7 @@
 // "postfx.taa": temporal anti-aliasing after Karis ("High Quality Temporal Supersampling",
-// SIGGRAPH 2014) and Playdead (INSIDE, GDC 2016), on the linear HDR image. Each pixel's depth
-// is reprojected into the previous frame (u_reproject: this frame's unjittered clip -> the
-// previous frame's clip, built in double on the CPU), the history is fetched there with a
+// SIGGRAPH 2014) and Playdead (INSIDE, GDC 2016), on the linear HDR image. Each pixel's place
+// in the previous frame comes from the frame's motion vectors ("temporal.velocity",
+// renderer/velocity.h: uv - velocity.xy, built in double on the CPU), the history is fetched there with a
 // 5-tap Catmull-Rom filter, clipped towards this frame's 3x3 neighbourhood (mean +- gamma
 // standard deviations in YCoCg), and blended with the current pixel. History is rejected
 // (the current pixel alone) outside the previous image, where the previous frame saw
@@ -18,7 +18,7 @@ layout(binding = BINDING_TEX_0) uniform sampler2D u_current;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_2) uniform sampler2D u_history;
 layout(binding = BINDING_TEX_3) uniform sampler2D u_prev_depth;
-layout(location = 0) uniform mat4 u_reproject;
+layout(binding = BINDING_TEX_4) uniform sampler2D u_velocity;  // rg uv motion, b previous depth, a valid
 layout(location = 1) uniform vec4 u_jitter;  // xy this frame's jitter (NDC), z near plane (m)
 layout(location = 2) uniform vec4 u_params;  // x blend, y clip gamma, z sharpen, w 1: history rejected (cut, first frame)
 layout(location = 3) uniform float u_disocclusion;
@@ -85,20 +85,18 @@ void main() {
     vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
     vec3 lo = m1 - u_params.y * sigma, hi = m1 + u_params.y * sigma;
 
-    // This pixel's point, unjittered, in the previous frame.
-    vec2 ndc = gl_FragCoord.xy / size * 2.0 - 1.0;
-    vec4 prev = u_reproject * vec4(ndc - u_jitter.xy, depth, 1.0);
-    bool valid = u_params.w < 0.5 && prev.w > 1e-6;
+    // This pixel's point, unjittered, in the previous frame: it moved by the velocity, and the
+    // history texel under this pixel's centre moved by as much (the history is not jittered).
+    vec4 velocity = texelFetch(u_velocity, p, 0);
+    bool valid = u_params.w < 0.5 && velocity.a > 0.5;
     vec2 uv = vec2(-1.0);
     if (valid) {
-        // The point moved from ndc - jitter to prev.xy / prev.w; the history texel under this
-        // pixel's centre moved by as much (the history is not jittered).
-        uv = (prev.xy / prev.w + u_jitter.xy) * 0.5 + 0.5;
+        uv = gl_FragCoord.xy / size - velocity.xy;
         valid = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
     }
     if (valid && depth > 0.0) {
         // Disoccluded: every previous depth around the point is nearer than the point was.
-        float expected = u_jitter.z / max(prev.z / prev.w, 1e-30);
+        float expected = u_jitter.z / max(velocity.z, 1e-30);
         vec2 q = uv * size - 0.5;
         ivec2 q0 = clamp(ivec2(floor(q)), ivec2(0), last), q1 = clamp(q0 + 1, ivec2(0), last);
         float d00 = texelFetch(u_prev_depth, q0, 0).r, d10 = texelFetch(u_prev_depth, ivec2(q1.x, q0.y), 0).r;

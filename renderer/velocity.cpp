@@ -1,0 +1,53 @@
+// The motion-vector pass: the reprojection matrix in double, one full-screen pass on the GPU.
+#include "renderer/velocity.h"
+
+#include "renderer/bindings.h"
+#include "renderer/temporal.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+namespace vista {
+
+glm::dmat4 clipReprojection(const ViewParams& previous, const ViewParams& current) {
+    // inverse(view_proj) takes clip to camera-relative points; previousClipFromRelative adds the
+    // translation between the cameras (in double) and projects with the previous camera.
+    const glm::dmat4 inv_current = glm::inverse(glm::dmat4(viewMatrices(current).view_proj));
+    return previousClipFromRelative(previous, current) * inv_current;
+}
+
+glm::dvec4 cpuVelocity(const ViewParams& previous, const ViewParams& current, glm::dvec2 ndc, double depth) {
+    const glm::dvec4 prev = clipReprojection(previous, current) * glm::dvec4(ndc, depth, 1.0);
+    if (!(prev.w > 1e-6)) return glm::dvec4(0.0);
+    return {(ndc.x - prev.x / prev.w) * 0.5, (ndc.y - prev.y / prev.w) * 0.5, prev.z / prev.w, 1.0};
+}
+
+TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, const ViewParams& previous) {
+    const glm::mat4 reproject(clipReprojection(previous, rc.view));
+    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    struct Data {
+        TextureHandle depth, velocity;
+    };
+    return graph.addPass<Data>("temporal.velocity",
+        [&](PassBuilder& b, Data& d) {
+            const TextureDesc& desc = b.desc(depth);
+            d.depth = b.read(depth);
+            d.velocity = b.write(b.create("temporal.velocity", {desc.width, desc.height, PixelFormat::RGBA32F}));
+        },
+        [&rc, reproject, jitter](const Data& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.velocity);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}), desc.width, desc.height);
+            const GLuint program = rc.shaders.get("renderer/shaders/velocity.glsl")->id();
+            glUseProgram(program);
+            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
+            glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
+            glBindTextureUnit(binding::kTex0, ctx.texture(d.depth));
+            drawFullscreen(rc);
+        }).velocity;
+}
+
+std::vector<std::pair<std::string, std::vector<std::string>>> velocityPrograms() {
+    return {{"renderer/shaders/velocity.glsl", {}}};
+}
+
+}  // namespace vista
