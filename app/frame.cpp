@@ -453,6 +453,8 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         report.counters["terrain.tier_near"] = double(c.tier_instances[0]);
         report.counters["terrain.tier_mid"] = double(c.tier_instances[1]);
         report.counters["terrain.tier_far"] = double(c.tier_instances[2]);
+        // Grid triangles drawn as tessellation patches ([terrain.tessellation]; absent when off).
+        if (s.terrain.tessellation.enabled) report.counters["terrain.tess_patches"] = double(c.tess_patches);
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);

@@ -84,6 +84,20 @@ void setTaa(Settings& s, double v, const Settings&) {
     s.fxaa.enabled = v == 0.0;
 }
 double taaOn(const Settings& s) { return s.taa.enabled ? 1.0 : 0.0; }
+// Parallax occlusion mapping: 0 is off (no program variant), otherwise its linear steps.
+void setPomSteps(Settings& s, double v, const Settings&) {
+    s.terrain.pom.enabled = v > 0.0;
+    if (v > 0.0) s.terrain.pom.max_steps = toInt(v);
+}
+double pomSteps(const Settings& s) { return s.terrain.pom.enabled ? double(s.terrain.pom.max_steps) : 0.0; }
+// Tessellated displacement: 0 is off (no program variant), otherwise the largest edge factor.
+void setTessFactor(Settings& s, double v, const Settings&) {
+    s.terrain.tessellation.enabled = v > 0.0;
+    if (v > 0.0) s.terrain.tessellation.max_factor = float(v);
+}
+double tessFactor(const Settings& s) {
+    return s.terrain.tessellation.enabled ? double(s.terrain.tessellation.max_factor) : 0.0;
+}
 
 // The table: key, unit, {low, medium, high, ultra, reference}, whether the scene uses it.
 const QualityKnob kKnobs[] = {
@@ -94,6 +108,12 @@ const QualityKnob kKnobs[] = {
     // texture at every distance (the largest values of both ranges).
     {"terrain.detail_distance_m", "m", {100, 150, 250, 400, 100000}, terrainOn},
     {"terrain.far_material_m", "m", {1500, 2000, 3000, 6000, 1.0e7}, terrainOn},
+    // Material filtering and relief up close (docs/terrain-detail.md): anisotropic filtering
+    // of the material textures; parallax occlusion mapping's linear steps and tessellation's
+    // largest edge factor (0: off, no program variant) from ultra up.
+    {"terrain.material_anisotropy", "x", {1, 1, 1, 8, 16}, terrainOn},
+    {"terrain.pom.max_steps", "steps", {0, 0, 0, 24, 128}, terrainOn, setPomSteps, pomSteps, "off"},
+    {"terrain.tessellation.max_factor", "", {0, 0, 0, 16, 64}, terrainOn, setTessFactor, tessFactor, "off"},
     // Sun shadows (bench shadows: error halves from 1024 to 4096 texels at 2-3x the cost).
     {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096}, shadowsOn},
     {"shadows.pcf_taps", "taps", {4, 8, 12, 16, 64}, shadowFilterOn},

@@ -114,6 +114,30 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"band_blend", "", "heightmap units over which bands blend"}, s.band_blend, 0.0001f, 0.5f);
     v.field({"band_jitter", "", "heightmap units of noise on band edges"}, s.band_jitter, 0.0f, 0.5f);
     v.field({"rock_slope", "", "normal y below which slopes turn to rock (1 = flat)"}, s.rock_slope, 0.0f, 1.0f);
+    v.field({"material_anisotropy", "x", "anisotropic filtering of the material textures (albedo, detail normals, heights); "
+                                         "1: trilinear only"},
+            s.material_anisotropy, 1, 16);
+    TerrainPomSettings& p = s.pom;
+    v.section("terrain.pom", "parallax occlusion mapping of the near terrain's material relief (docs/terrain-detail.md)");
+    v.field({"enabled", "", "march the material height field in the near material tier (off: no program variant)"}, p.enabled);
+    v.field({"max_steps", "steps", "linear search steps at a grazing view; a quarter of them looking straight down"},
+            p.max_steps, 2, 256);
+    v.field({"refine_steps", "steps", "binary refinement steps after the linear search"}, p.refine_steps, 0, 16);
+    v.field({"depth_m", "m", "depth of material height 0 below height 1 (the drawn surface)"}, p.depth_m, 0.001f, 1.0f);
+    v.field({"distance_m", "m", "the relief flattens from half this distance and is plain normal mapping beyond it "
+                               "(at most [terrain] detail_distance_m)"},
+            p.distance_m, 1.0f, 10000.0f);
+    v.field({"shadow", "", "strength of the relief's soft self-shadowing toward the sun (0: none)"}, p.shadow, 0.0f, 1.0f);
+    v.field({"shadow_steps", "steps", "steps of the self-shadowing march toward the sun"}, p.shadow_steps, 1, 64);
+    TerrainTessSettings& t = s.tessellation;
+    v.section("terrain.tessellation", "tessellated displacement of the near terrain by the material relief, also in the "
+                                      "shadow passes (docs/terrain-detail.md)");
+    v.field({"enabled", "", "tessellate and displace the quadrants nearer than range_m (off: no program variant)"}, t.enabled);
+    v.field({"range_m", "m", "quadrants nearer than this are tessellated; the displacement fades out by 90% of it"}, t.range_m,
+            2.0f, 1000.0f);
+    v.field({"edge_px", "px", "target length of a tessellated edge on screen"}, t.edge_px, 1.0f, 64.0f);
+    v.field({"max_factor", "", "largest subdivision of an edge"}, t.max_factor, 1.0f, 64.0f);
+    v.field({"depth_m", "m", "depth of relief height 0 below the drawn surface"}, t.depth_m, 0.001f, 1.0f);
 }
 
 void describe(SettingsVisitor& v, GrassSettings& s) {

@@ -66,6 +66,31 @@ enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
 enum class LodMetric : int { Error, Distance };
 enum class DemNodata : int { Fill, Refuse };  // what a DEM's nodata cells get (terrain/dem.h)
 
+//! Parallax occlusion mapping of the near terrain's materials ([terrain.pom], terrain/shaders/pom.glsl):
+//! the view ray marched through the blended material height field (linear search, then binary
+//! refinement), soft self-shadowing toward the sun, fading to plain normal mapping by distance.
+//! Off: no program variant, nothing marched.
+struct TerrainPomSettings {
+    bool enabled = false;             //!< march the relief in the near material tier (a program variant)
+    int max_steps = 32;               //!< linear search steps at a grazing view (a quarter of them looking straight down), 2..256
+    int refine_steps = 5;             //!< binary refinement steps after the linear search, 0..16
+    float depth_m = 0.05f;            //!< m, depth of material height 0 below height 1 (the drawn surface), 0.001..1
+    float distance_m = 40.0f;         //!< m, the relief flattens from half this distance and is gone at it (at most detail_distance_m), 1..10000
+    float shadow = 0.7f;              //!< strength of the relief's soft self-shadowing toward the sun (0: none), 0..1
+    int shadow_steps = 8;             //!< steps of the self-shadowing march toward the sun, 1..64
+};
+
+//! Tessellated displacement of the near terrain ([terrain.tessellation], terrain/shaders/terrain_tess.glsl):
+//! near quadrants drawn as patches, subdivided by each edge's size on screen and displaced by the
+//! material relief, in the G-buffer and the shadow passes. Off: no program variant, no patches.
+struct TerrainTessSettings {
+    bool enabled = false;             //!< tessellate and displace the quadrants nearer than range_m
+    float range_m = 40.0f;            //!< m, quadrants nearer than this are tessellated; displacement ends by 90% of it, 2..1000
+    float edge_px = 6.0f;             //!< px, target length of a tessellated edge on screen, 1..64
+    float max_factor = 16.0f;         //!< largest subdivision of an edge, 1..64
+    float depth_m = 0.1f;             //!< m, depth of relief height 0 below the drawn surface, 0.001..1
+};
+
 struct TerrainSettings {
     bool enabled = true;
     std::string heightmap = "data/heightmaps/island.png";  //!< PNG/TIFF/EXR, or .r16 with raw_width/raw_height
@@ -98,6 +123,9 @@ struct TerrainSettings {
     float band_blend = 0.03f;         //!< heightmap units over which bands blend
     float band_jitter = 0.02f;        //!< heightmap units of noise on band edges
     float rock_slope = 0.75f;         //!< normal.y below which slopes turn to rock
+    int material_anisotropy = 1;      //!< anisotropic filtering of the material textures (1: trilinear only), 1..16
+    TerrainPomSettings pom;           //!< [terrain.pom]
+    TerrainTessSettings tessellation; //!< [terrain.tessellation]
 };
 
 //! Grass (terrain/grass/grass.h): instanced curved blades placed per world cell around the camera,

@@ -95,6 +95,10 @@ MaterialImages generateMaterialImages(int size) {
             for (int x = 0; x < size; ++x)
                 h[std::size_t(y * size + x)] = layerHeight(MaterialLayer(layer), (float(x) + 0.5f) / float(size),
                                                            (float(y) + 0.5f) / float(size));
+        // The relief keeps the whole 8-bit range: stretched so the layer's lowest texel is 0 and its
+        // highest 1 ([terrain.pom] depth_m says how deep that is).
+        const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
+        const float h_min = *lo, h_range = std::max(*hi - *lo, 1e-6f);
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
                 std::size_t i = std::size_t(y * size + x), o = (std::size_t(layer) * texels + i) * 4;
@@ -111,7 +115,7 @@ MaterialImages generateMaterialImages(int size) {
                 out.normal[o + 0] = unorm(0.5f - 0.5f * dx / len);
                 out.normal[o + 1] = unorm(0.5f - 0.5f * dy / len);
                 out.normal[o + 2] = unorm(0.5f + 0.5f / len);
-                out.normal[o + 3] = 255;
+                out.normal[o + 3] = unorm((n - h_min) / h_range);
             }
     }
     return out;

@@ -9,12 +9,31 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace vista {
 namespace {
 
 // A selection larger than this is truncated (and says so): far beyond any sane LOD setting.
 constexpr std::size_t kMaxInstances = 1 << 16;
+
+// GL 4.6 / EXT_texture_filter_anisotropic (the loader is generated for 4.5 core without it).
+constexpr GLenum kTextureMaxAnisotropy = 0x84FE, kMaxTextureMaxAnisotropy = 0x84FF;
+
+// The largest anisotropy the GL offers (1 without the extension).
+float maxAnisotropy() {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+        if (name && (std::strcmp(name, "GL_EXT_texture_filter_anisotropic") == 0 || std::strcmp(name, "GL_ARB_texture_filter_anisotropic") == 0)) {
+            GLfloat max = 1.0f;
+            glGetFloatv(kMaxTextureMaxAnisotropy, &max);
+            return std::max(max, 1.0f);
+        }
+    }
+    return 1.0f;
+}
 
 gl::Texture materialArray(const std::vector<std::uint8_t>& pixels, int size, int layers, GLenum format, const char* name) {
     GLuint id = 0;
@@ -53,8 +72,17 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
         defines.push_back("TERRAIN_VIEW=" + std::to_string(int(s.view)));  // the same for every tier
     else
         defines.push_back("MATERIAL_TIER=" + std::to_string(std::clamp(tier, 0, kMaterialTiers - 1)));
+    // Parallax occlusion mapping only in the near tier: the relief is flat by [terrain.pom]
+    // distance_m, which draw() keeps within detail_distance_m (where the near tier ends).
+    if (s.pom.enabled && s.view == TerrainView::Shaded && tier == 0) defines.push_back("TERRAIN_POM");
     if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
     return defines;
+}
+
+std::vector<std::string> terrainTessDefines(const TerrainSettings& s) {
+    TerrainSettings no_pom = s;  // no POM: the displaced geometry is the relief
+    no_pom.pom.enabled = false;
+    return terrainDefines(no_pom, 0);
 }
 
 int materialTier(const TerrainSettings& s, double distance_m) {
@@ -74,12 +102,21 @@ std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() 
         TerrainSettings s;
         s.wireframe = wireframe;
         for (int tier = 0; tier < kMaterialTiers; ++tier) programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, tier)});
+        s.pom.enabled = true;
+        programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
+        s.pom.enabled = false;
         for (TerrainView view : {TerrainView::Lod, TerrainView::Morph, TerrainView::Normals, TerrainView::Error}) {
             s.view = view;
             programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
         }
     }
     programs.push_back({"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}});
+    for (TerrainView view : {TerrainView::Shaded, TerrainView::Normals}) {
+        TerrainSettings s;
+        s.view = view;
+        programs.push_back({"terrain/shaders/terrain_tess.glsl", terrainTessDefines(s)});
+    }
+    programs.push_back({"terrain/shaders/terrain_tess.glsl", {"SHADOW_PASS"}});
     programs.push_back({"terrain/shaders/normals.glsl", {}});
     programs.push_back({"terrain/shaders/bounds.glsl", {}});
     return programs;
@@ -205,11 +242,15 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMappi
         t->layer_mean_[std::size_t(l)] = glm::vec4(sum / double(layer_texels));
     }
     t->albedo_ = materialArray(materials.albedo, materials.size, materials.layers, GL_SRGB8_ALPHA8, "terrain albedo");
-    t->detail_ = materialArray(materials.normal, materials.size, materials.layers, GL_RGBA8, "terrain detail normals");
+    // Detail normals with the relief height in alpha (materials.h): one fetch gives POM both, and
+    // both want the same mips and filtering.
+    t->detail_ = materialArray(materials.normal, materials.size, materials.layers, GL_RGBA8, "terrain detail normals + heights");
+    t->max_anisotropy_ = maxAnisotropy();
     t->bias_.clear(t->tree_, t->mapping_);
     glm::ivec2 corners = t->bias_.cornerCount();
     t->bias_texture_ = gl::Texture::create2D(corners.x, corners.y, GL_R32F, 1, "terrain distance bias");
 
+    t->shaders_ = &shaders;
     std::vector<std::uint32_t> indices = gridIndices(s.grid / 2);
     t->index_count_ = GLsizei(indices.size());
     t->grid_indices_ = gl::Buffer::create(GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), 0, "terrain grid");
@@ -241,6 +282,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     auto start = std::chrono::steady_clock::now();
     source_.origin = s.origin;  // moving the terrain needs no reload
     camera_ = camera;
+    error_scale_ = error_scale;
     // The error bound depends on the settings and the view's pixels per radian only: remade
     // when one changes (a resize, a slider), not per frame.
     bool error_metric = s.lod_metric == LodMetric::Error;
@@ -279,6 +321,11 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
         counters_.draws += tier_counts_[std::size_t(tier)] > 0 ? 1 : 0;
     }
     counters_.triangles = std::int64_t(instances_.size()) * (index_count_ / 3);
+    // Tessellated: the near tier's nearest quadrants (sorted front to back) within the range.
+    tess_count_ = 0;
+    if (s.tessellation.enabled)
+        while (tess_count_ < tier_counts_[0] && distances_sorted_[tess_count_] < s.tessellation.range_m) ++tess_count_;
+    counters_.tess_patches = std::int64_t(tess_count_) * (index_count_ / 3);
     counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
@@ -320,9 +367,11 @@ void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& 
     auto key = [&](std::uint32_t i) { return std::make_pair(materialTier(s, distances[i]), distances[i]); };
     std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
     sorted_.resize(instances_.size());
+    distances_sorted_.resize(instances_.size());
     tier_counts_.fill(0);
     for (std::size_t k = 0; k < order_.size(); ++k) {
         sorted_[k] = instances_[order_[k]];
+        distances_sorted_[k] = distances[order_[k]];
         ++tier_counts_[std::size_t(materialTier(s, distances[order_[k]]))];
     }
     instances_.swap(sorted_);
@@ -361,7 +410,18 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
     glBindVertexArray(vao_.id());
 }
 
-void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs) {
+void Terrain::setTessState(const TerrainSettings& s, GLuint program) {
+    const TerrainTessSettings& t = s.tessellation;
+    glm::dvec3 rel = camera_ - s.origin;
+    const double period = double(s.texture_scale_m);  // the relief repeats every texture_scale_m
+    glProgramUniform4f(program, 28, t.edge_px, float(error_scale_), t.range_m, t.max_factor);
+    glProgramUniform4f(program, 29, t.depth_m, 1.0f / s.texture_scale_m, float(std::fmod(rel.x, period)),
+                       float(std::fmod(rel.z, period)));
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    glBindTextureUnit(binding::kTex3, detail_.id());
+}
+
+void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program) {
     if (instances_.empty()) return;
     glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
     glm::dvec3 rel = camera_ - s.origin;
@@ -369,6 +429,10 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     // inside the near tier); 0 keeps them at every distance.
     const float far_end = s.far_material_m > 0.0f ? std::max(s.far_material_m, s.detail_distance_m) : 3.0e38f;
     const float far_start = s.far_material_m > 0.0f ? std::max(0.75f * far_end, s.detail_distance_m) : 2.0e38f;
+    if (const float aniso = std::min(float(s.material_anisotropy), max_anisotropy_); aniso != anisotropy_) {
+        anisotropy_ = aniso;  // a texture parameter, so set on change only
+        for (const gl::Texture* t : {&albedo_, &detail_}) glTextureParameterf(t->id(), kTextureMaxAnisotropy, aniso);
+    }
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
@@ -377,21 +441,34 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     for (int tier = 0; tier < kMaterialTiers; ++tier) {
         const std::size_t count = tier_counts_[std::size_t(tier)];
         if (count == 0) continue;
-        const GLuint program = programs[std::size_t(tier)];
-        glUseProgram(program);
-        setVertexState(s, program);
-        glProgramUniform1i(program, 25, GLint(first));
-        glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
-        glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
-        glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
-        glProgramUniform2f(program, 7, far_start, far_end);
-        glProgramUniform1f(program, 13, s.max_error_px);
-        glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
-        glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
-        glProgramUniform1f(program, 17, wetness_);
-        glProgramUniform4fv(program, 20, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
-        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
-        first += count;
+        // The tessellated quadrants: the first of the near tier, as patches of one grid triangle.
+        const std::size_t tess = tier == 0 && tess_program ? tess_count_ : 0;
+        for (int pass = tess > 0 ? 0 : 1; pass < 2; ++pass) {
+            const GLuint program = pass == 0 ? tess_program : programs[std::size_t(tier)];
+            const std::size_t n = pass == 0 ? tess : count - tess;
+            if (n == 0) continue;
+            glUseProgram(program);
+            setVertexState(s, program);
+            glProgramUniform1i(program, 25, GLint(first));
+            glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
+            glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
+            glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
+            glProgramUniform2f(program, 7, far_start, far_end);
+            glProgramUniform1f(program, 13, s.max_error_px);
+            glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
+            glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
+            glProgramUniform1f(program, 17, wetness_);
+            glProgramUniform4fv(program, 20, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
+            if (tier == 0 && s.pom.enabled && pass == 1) {
+                // The relief is gone where the near tier ends (the other tiers have no POM variant).
+                const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
+                glProgramUniform4f(program, 26, s.pom.depth_m, pom_end, s.pom.shadow, 0.0f);
+                glProgramUniform4i(program, 27, s.pom.max_steps, s.pom.refine_steps, s.pom.shadow_steps, 0);
+            }
+            if (pass == 0) setTessState(s, program);
+            glDrawElementsInstanced(pass == 0 ? GL_PATCHES : GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(n));
+            first += n;
+        }
     }
 }
 
@@ -407,10 +484,41 @@ void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::ve
     }
     const GLsizeiptr bytes = GLsizeiptr(instances.size() * sizeof(TerrainInstance));
     const GLintptr offset = shadow_slot_bytes_ * std::clamp(slot, 0, kShadowSlots - 1);
-    glNamedBufferSubData(shadow_instances_.id(), offset, bytes, instances.data());
-    setVertexState(s, program);
+    const std::vector<TerrainInstance>* list = &instances;
+    std::size_t tess = 0;
+    if (s.tessellation.enabled && shaders_ && slot == 0) {
+        // The quadrants within the range in x, z (a superset of the view's, which measures in 3D:
+        // an extra one is beyond the displacement's reach and draws as it would untessellated).
+        // In the first cascade only: it holds the nearest ground, and the coarser cascades'
+        // texels are larger than the relief (tessellating them too cost 1.6 times the
+        // G-buffer's extra in the meadow).
+        shadow_split_.clear();
+        for (int near = 1; near >= 0; --near)
+            for (const TerrainInstance& i : instances) {
+                const glm::vec2 lo(i.a.x, i.a.y), hi = lo + glm::vec2(i.a.z, i.b.z) * float(source_.grid / 2);
+                const glm::vec2 d = glm::max(glm::max(lo, -hi), glm::vec2(0.0f));
+                if ((glm::length(d) < s.tessellation.range_m) == bool(near)) shadow_split_.push_back(i);
+                tess += near && glm::length(d) < s.tessellation.range_m ? 1 : 0;
+            }
+        list = &shadow_split_;
+    }
+    glNamedBufferSubData(shadow_instances_.id(), offset, bytes, list->data());
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_instances_.id(), offset, bytes);
-    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size()));
+    if (tess > 0) {
+        const GLuint tess_program = shaders_->get("terrain/shaders/terrain_tess.glsl", {"SHADOW_PASS"})->id();
+        GLfloat matrix[16];
+        glGetUniformfv(program, 16, matrix);  // the caller's cascade matrix
+        glUseProgram(tess_program);
+        glProgramUniformMatrix4fv(tess_program, 16, 1, GL_FALSE, matrix);
+        setVertexState(s, tess_program);
+        setTessState(s, tess_program);
+        glDrawElementsInstanced(GL_PATCHES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(tess));
+        glUseProgram(program);
+    }
+    if (tess == list->size()) return;
+    setVertexState(s, program);
+    glProgramUniform1i(program, 25, GLint(tess));
+    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(list->size() - tess));
 }
 
 void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
@@ -505,7 +613,10 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             glEnable(GL_CULL_FACE);
             glCullFace(GL_BACK);
             glFrontFace(GL_CCW);
-            terrain.draw(s, programs);
+            const GLuint tess = s.tessellation.enabled
+                                    ? rc.shaders.get("terrain/shaders/terrain_tess.glsl", terrainTessDefines(s))->id()
+                                    : 0;
+            terrain.draw(s, programs, tess);
             glDisable(GL_CULL_FACE);
             glDisable(GL_DEPTH_TEST);
         });

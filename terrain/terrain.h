@@ -28,6 +28,7 @@ struct TerrainCounters {
     std::array<std::int64_t, kMaterialTiers> tier_instances{};  // drawn quadrants per material tier
     double select_ms = 0.0;
     double base_range_m = 0.0;  // LOD 0 range in use (after the node-size and error bounds)
+    std::int64_t tess_patches = 0;  // grid triangles drawn as tessellation patches ([terrain.tessellation])
 };
 
 // One quadrant of a node at its LOD level: what the shader draws per instance.
@@ -99,13 +100,17 @@ public:
     void setWetness(float wetness) { wetness_ = wetness; }
 
     // Draws the current instances, front to back, one instanced draw per material tier with
-    // programs[tier] (terrainDefines()); uploads a remade bias first.
-    void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs);
+    // programs[tier] (terrainDefines()); uploads a remade bias first. With [terrain.tessellation]
+    // on, the near tier's quadrants within its range are drawn first as patches with tess_program
+    // (terrainTessDefines()).
+    void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program = 0);
 
     // The instances of the current selection inside planes (camera-relative), for a shadow pass.
     void shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const;
-    // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS) into slot
-    // 0..kShadowSlots-1 of the shadow instance buffer (made on first use).
+    // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS; its matrix at
+    // location 16 set) into slot 0..kShadowSlots-1 of the shadow instance buffer (made on first
+    // use). With [terrain.tessellation] on, in slot 0 (the first sun cascade) those near the
+    // camera are drawn displaced with terrain_tess.glsl's shadow program, as the view draws them.
     static constexpr int kShadowSlots = 8;
     void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot);
     // Draws several instance lists depth-only (spot shadow tiles): all are uploaded at once, then
@@ -137,6 +142,8 @@ private:
     void sortInstances(const TerrainSettings& s, const std::vector<float>& distances);
     // Sets the vertex stage's terrain uniforms and textures (the shadow pass needs only these).
     void setVertexState(const TerrainSettings& s, GLuint program);
+    // Sets terrain_tess.glsl's uniforms (factors for the main camera, relief) and patch size.
+    void setTessState(const TerrainSettings& s, GLuint program);
 
     TerrainSettings source_;  // what was loaded (file, mapping)
     Heightmap map_;
@@ -153,6 +160,7 @@ private:
     bool bias_dirty_ = true;            // bias_ not yet in bias_texture_
     std::vector<TerrainInstance> instances_;
     std::vector<float> distances_;              // scratch for select(): nearest distance per instance
+    std::vector<float> distances_sorted_;       // the same, in instances_' order
     std::vector<std::uint32_t> order_;          // scratch for sortInstances()
     std::vector<TerrainInstance> sorted_;       // scratch for sortInstances()
     std::array<std::size_t, kMaterialTiers> tier_counts_{};  // instances_ per tier, in order
@@ -162,6 +170,12 @@ private:
     glm::vec4 far_grass_{0.0f};
     glm::vec2 far_grass_fade_{0.0f, 1.0f};
     float wetness_ = 0.0f;
+    double error_scale_ = 1.0;          // the main camera's pixels per (length / distance), from select()
+    std::size_t tess_count_ = 0;        // instances_ (a prefix of the near tier) drawn tessellated
+    std::vector<TerrainInstance> shadow_split_;  // scratch for drawShadow(): tessellated ones first
+    ShaderLibrary* shaders_ = nullptr;  // for the tessellated shadow program
+    float max_anisotropy_ = 1.0f;  // the GL's limit (1 without the extension)
+    float anisotropy_ = 1.0f;      // what the material textures are set to
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_;
@@ -180,6 +194,8 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
 // The G-buffer program's defines for a material tier (0 near .. 2 far) and the settings' debug
 // view and wireframe (terrain.glsl: debug views are variants, so the shaded image pays nothing).
 std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier);
+// The tessellated near tier's program defines (terrain_tess.glsl), and its shadow program's.
+std::vector<std::string> terrainTessDefines(const TerrainSettings& s);
 // Material tier of a quadrant whose box is distance_m from the camera at its nearest.
 int materialTier(const TerrainSettings& s, double distance_m);
 

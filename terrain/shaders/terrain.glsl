@@ -33,6 +33,16 @@ float surfaceSample(vec2 t) {
 }
 
 #ifdef VERTEX_SHADER
+#ifdef TERRAIN_TESS
+// The tessellation stages (terrain_tess.glsl) take this stage's outputs and give the fragment
+// stage its v_* inputs.
+#define v_rel tc_rel
+#define v_texel tc_texel
+#define v_sample tc_sample
+#define v_grid tc_grid
+#define v_lod tc_lod
+#define v_morph tc_morph
+#endif
 #ifdef SHADOW_PASS
 // A sun shadow cascade (renderer/shadows/cascades.h): camera-relative world -> clip x, y and depth. The
 // vertices morph for the main camera (distances from the camera-relative origin), so the
@@ -98,7 +108,9 @@ void main() {
     v_grid = grid;
     v_lod = vec2(inst.a.w, 0.0);
     v_morph = morph;
-#ifdef SHADOW_PASS
+#if defined(TERRAIN_TESS)
+    gl_Position = vec4(v_rel, 1.0);  // projected after displacement (terrain_tess.glsl)
+#elif defined(SHADOW_PASS)
     gl_Position = u_shadow_matrix * vec4(v_rel, 1.0);
 #else
     gl_Position = u_view_proj * vec4(v_rel, 1.0);
@@ -210,12 +222,48 @@ vec3 layerDetail(int layer, vec2 uv) {
     return texture(u_detail, vec3(uv, float(layer))).xyz * 2.0 - 1.0;
 }
 
+#ifdef TERRAIN_POM
+layout(location = 26) uniform vec4 u_pom;         // depth_m, distance where the relief is gone (m), shadow strength, unused
+layout(location = 27) uniform ivec4 u_pom_steps;  // max linear steps, refinement steps, shadow steps, unused
+
+// What the relief at a point depends on, set once per pixel before the march: the planar uv's
+// gradients, the two band layers, their blend t, dirt and rock weights, the terrain normal.
+vec2 g_uv_dx, g_uv_dy;
+ivec2 g_layers;
+vec3 g_weights;
+vec3 g_normal;
+
+float layerRelief(int layer, vec2 uv, vec2 dx, vec2 dy) {
+    return textureGrad(u_detail, vec3(uv, float(layer)), dx, dy).a;  // the detail array's alpha (materials.h)
+}
+
+// The blended relief height at camera-relative point p, weighted as main() blends the albedo; rock
+// in its main-axis projection (the triplanar blend's largest share).
+float pomHeight(vec3 p) {
+    vec2 world = p.xz + u_tex_offset;
+    vec2 uv = world * u_material.z;
+    float h = mix(layerRelief(g_layers.x, uv, g_uv_dx, g_uv_dy), layerRelief(g_layers.y, uv, g_uv_dx, g_uv_dy), g_weights.x);
+    if (g_weights.y > 0.0) h = mix(h, layerRelief(DIRT, uv, g_uv_dx, g_uv_dy), g_weights.y);
+    if (g_weights.z > 0.0) {
+        vec3 q = (p + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
+        vec3 an = abs(g_normal);
+        vec2 main_uv = an.x >= an.y && an.x >= an.z ? q.zy : an.y >= an.z ? q.xz : q.xy;
+        // The planar gradients scaled to the rock's texture size: close enough for a mip choice.
+        h = mix(h, layerRelief(ROCK, main_uv, g_uv_dx * 0.5, g_uv_dy * 0.5), g_weights.z);
+    }
+    return h;
+}
+#endif
+
+#ifdef TERRAIN_POM
+#include "pom.glsl"
+#endif
+
 void main() {
     vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
     float dist = length(v_rel);
     float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
     vec2 world_xz = v_rel.xz + u_tex_offset;
-    vec2 uv = world_xz * u_material.z;
     // Detail (near tier) and texture (mid tier) weights by distance.
     float detail_fade = 1.0 - smoothstep(u_material.w * 0.5, u_material.w, dist);
     float textured = 1.0 - smoothstep(u_far_fade.x, u_far_fade.y, dist);
@@ -229,14 +277,38 @@ void main() {
     int lower = int(min(floor(bands), 3.0));
     float t = bands - float(lower);
     int upper = order[min(lower + 1, 3)];
-    vec4 albedo = mix(layerAlbedo(order[lower], uv, textured), layerAlbedo(upper, uv, textured), t);
-#if MATERIAL_TIER == 0
-    vec3 detail = mix(layerDetail(order[lower], uv), layerDetail(upper, uv), t);
-#endif
     // Slopes: dirt on moderate ones, rock on steep ones; rock is triplanar near the camera so
     // cliffs do not stretch. Snow holds on flatter ground only.
     float rock = rockWeight(n.y, u_material.y);
     float dirt = dirtWeight(n.y, u_material.y, rock, bands);
+    vec3 rel = v_rel;  // the point whose material shows: the drawn one, or where the relief's view ray lands
+#ifdef TERRAIN_POM
+    // Parallax occlusion mapping over the blend of the layers' reliefs, with the same weights
+    // (they change over metres, the relief over centimetres). Fetches take the drawn point's
+    // gradients: the march's offsets jump at the relief's silhouettes and would pick coarse mips.
+    float pom_fade = 1.0 - smoothstep(u_pom.y * 0.5, u_pom.y, dist);
+    float pom_shadow = 1.0;
+    g_uv_dx = dFdx(world_xz * u_material.z);  // here, in uniform control flow
+    g_uv_dy = dFdy(world_xz * u_material.z);
+    if (pom_fade > 0.0) {
+        g_layers = ivec2(order[lower], upper);
+        g_weights = vec3(t, dirt, rock);
+        g_normal = n;
+        vec3 to_eye = -v_rel / max(dist, 1e-6);
+        float depth_m = u_pom.x * pom_fade;  // flattens with distance, so no pixel jumps where it ends
+        vec3 span = pomSpan(to_eye, n, depth_m);
+        float hit = pomMarch(v_rel, span, pomSteps(dot(to_eye, n), u_pom_steps.x), u_pom_steps.y);
+        rel = v_rel - span * hit;
+        if (u_pom.z > 0.0 && dot(u_sun_dir.xyz, n) > 0.0)
+            pom_shadow = mix(1.0, pomShadow(rel, 1.0 - hit, pomSpan(u_sun_dir.xyz, n, depth_m), u_pom_steps.z), u_pom.z);
+    }
+    world_xz = rel.xz + u_tex_offset;
+#endif
+    vec2 uv = world_xz * u_material.z;
+    vec4 albedo = mix(layerAlbedo(order[lower], uv, textured), layerAlbedo(upper, uv, textured), t);
+#if MATERIAL_TIER == 0
+    vec3 detail = mix(layerDetail(order[lower], uv), layerDetail(upper, uv), t);
+#endif
     // Beyond the grass blades' reach the grass layer takes their colour, so the meadow
     // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
     float far_grass = grassWeight(bands, rock, dirt) * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
@@ -247,7 +319,7 @@ void main() {
 #endif
     }
     if (rock > 0.0) {
-        vec3 p = (v_rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
+        vec3 p = (rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
         // Planar rock along the normal's main axis (tiers 0 and 1; tier 2: the mean).
         vec3 an = abs(n);
         vec2 main_uv = an.x >= an.y && an.x >= an.z ? p.zy : an.y >= an.z ? p.xz : p.xy;
@@ -262,6 +334,11 @@ void main() {
 #endif
         albedo = mix(albedo, rock_albedo, rock);
     }
+#ifdef TERRAIN_POM
+    // The relief's self-shadow darkens the albedo: the G-buffer has no sun-visibility channel
+    // (docs/terrain-detail.md), and the pits it falls in would see less sky too.
+    albedo.rgb *= pom_shadow;
+#endif
     vec3 shading_n = n;
 #if MATERIAL_TIER == 0
     // Detail normals through the in-shader tangent frame (001: texture coordinates follow
