@@ -4,6 +4,7 @@
 // when either crosses a grid step. A frame that rebuilds nothing adds "sky.aerial_volume" and
 // "sky.aerial" (when it has depth and aerial perspective is on) and "sky.atmosphere".
 #include "sky/atmosphere.h"
+#include "sky/day_cycle.h"
 #include "sky/night_light.h"
 
 #include "renderer/bindings.h"
@@ -70,7 +71,6 @@ glm::dvec3 sunDirection(const SkySettings& sky) {
 namespace {
 
 constexpr double kObliquity = 23.44 * std::numbers::pi / 180.0;
-constexpr double kSynodicMonthDays = 29.530589;
 
 // The sun's ecliptic longitude (mean, 0 at the March equinox) and right ascension at a day.
 double solarLongitude(double day) { return 2.0 * std::numbers::pi * (day - 80.0) / 365.2422; }

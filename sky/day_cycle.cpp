@@ -8,8 +8,6 @@ namespace vista {
 
 namespace {
 
-constexpr double kSynodicMonthDays = 29.530589;
-
 double wrap(double v, double period) {
     const double r = std::fmod(v, period);
     return r < 0.0 ? r + period : r;

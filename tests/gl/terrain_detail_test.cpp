@@ -233,7 +233,7 @@ TEST_CASE("gl: tessellated terrain has no cracks over random views, LOD ranges a
     std::printf("crack test: %d of 10 views tessellated, %d patches\n", views, patches);
 }
 
-TEST_CASE("gl: tessellation off leaves no patch and no counter; on, only near quadrants are patches") {
+TEST_CASE("gl: tessellation off leaves no patch and no counter, on: only near quadrants are patches") {
     Settings s = crackScene();
     useHills(s);
     const ViewParams view{{0.0, renderer().terrain()->heightAt(0.0, 0.0) + 10.0, 0.0}, 0.0, -10.0, 60.0, 0.1, 96, 54};
