@@ -23,8 +23,13 @@ SANITIZE_DIR ?= build-sanitize
 # reference at full image sizes: the golden images (every post pass also runs in postfx_test),
 # and the GPU sky and aerial perspective against the CPU reference (the reference runs under
 # the sanitizers in the atmosphere unit tests, the sky and aerial passes in every GL scene test).
+# Then the slowest image comparisons whose code the run covers elsewhere: EGL against OSMesa (the
+# same passes, another context), the default scene's shards within a tolerance (the bit-identical
+# shards, resume and mp4 tests drive the same farm code), bench sky and bench shadows (their
+# scene isolation is the bench scene unit tests) and 100,000 lights (the light hash unit tests
+# build 100,000 lights under the sanitizers).
 # Every parser, file writer, CLI error path and unit test stays in the run.
-SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster|extreme scenes .config|golden images of the default scene|sky radiance from the GPU LUTs|aerial perspective on the ground matches
+SANITIZE_SKIP ?= vista quality writes|bench-gpu.s script|Slurm cluster|extreme scenes .config|golden images of the default scene|sky radiance from the GPU LUTs|aerial perspective on the ground matches|EGL backend renders the same image|shards of the default scene|bench sky measures|bench shadows, stabilised|100,000 lights and zero-radius
 # Mesa (llvmpipe under OSMesa) is not built with the sanitizers and keeps allocations until exit:
 # leaks are not checked in the tests; every other AddressSanitizer check is.
 export ASAN_OPTIONS ?= detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
