@@ -19,6 +19,7 @@
 #include "sky/night_light.h"
 #include "sky/clouds/cloud_model.h"
 #include "sky/clouds/clouds.h"
+#include "sky/clouds/sun_visibility.h"
 #include "sky/weather/weather.h"
 #include "sky/weather/weather_model.h"
 #include "terrain/material_weights.h"
@@ -170,6 +171,11 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     // the moon at night) is the one directional light the GPU passes shade.
     rc.sun_direction = sunDirection(settings.sky);
     rc.sun_illuminance = settings.sky.sun_illuminance;
+    // The lens flare's strength: the sun through the atmosphere and the clouds (a red sun at the
+    // horizon or one behind a cloud does not flare at full strength).
+    if (settings.lens_flare.enabled)
+        rc.sun_visibility = float(sunVisibility(sky_lighting_.get(settings.sky, view.position), settings.sky,
+                                                settings.clouds, view.position, time_s).share());
     rc.cd_per_value = luxPerHdrUnit(settings.sky.sun_illuminance);
     const glm::dvec3 key = sky_lighting_.get(settings.sky, view.position).keyDirection();
     u.sun_dir = glm::vec4(glm::vec3(key), rc.sun_illuminance);
@@ -601,6 +607,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     if (const std::size_t postfx = postfx_.memoryBytes() + (taa_ ? taa_->memoryBytes() : 0); postfx > 0)
         report.counters["postfx.memory_bytes"] = double(postfx);
     report.counters["sky.pre_exposure"] = pre_exposure_;
+    if (s.lens_flare.enabled) report.counters["postfx.lens_flare.sun_visibility"] = rc.sun_visibility;
     if (s.sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
     report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
     report.counters["sky.lux"] = sky_lighting_.get(s.sky, view.position).upLux(s.sky.sun_illuminance);  // physical: the scaled units cancel

@@ -92,7 +92,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 flush();
                 if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
                 image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, rc.sun_direction,
-                                               rc.sun_illuminance, dt, reset);
+                                               rc.sun_illuminance * rc.sun_visibility, dt, reset);
                 uses_flare = true;
                 break;
             case PostEffect::Scotopic:

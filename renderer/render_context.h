@@ -43,6 +43,7 @@ struct RenderContext {
     // the sky's settings.
     glm::dvec3 sun_direction{0.0, 1.0, 0.0};  // unit vector towards the sun
     float sun_illuminance = 0.0f;             // [sky] sun_illuminance times the pre-exposure
+    float sun_visibility = 1.0f;              // share of the sun reaching the camera through the air and clouds, 0..1
     // cd/m^2 per unit of the HDR image as rendered (pre-exposure included; sky/night_light.h
     // luxPerHdrUnit), for the passes that work in physical units (exposure, scotopic vision).
     double cd_per_value = 1.0;
