@@ -22,7 +22,8 @@ FrameRenderer& renderer() { return test::compiledFileRenderer(); }
 
 constexpr float kFlat = 0.3f, kHeightScale = 100.0f;
 
-Settings objectScene(const std::filesystem::path& map) {
+// The island of `map` with everything but the terrain and the objects switched off.
+Settings bareScene(const std::filesystem::path& map) {
     Settings s;
     s.terrain.heightmap = map.string();
     s.terrain.size_m = 8192.0f;
@@ -33,6 +34,11 @@ Settings objectScene(const std::filesystem::path& map) {
     s.grass.enabled = false;
     s.water.enabled = false;
     s.ssao.enabled = false;
+    return s;
+}
+
+Settings objectScene(const std::filesystem::path& map) {
+    Settings s = bareScene(map);
     s.objects.impostor_distance_m = 1.0e6f;  // meshes at every distance (impostors: impostor_test.cpp)
     const std::string house = (vistaRoot() / "data/props/house.glb").string();
     auto add = [&](const char* name, double x, double z) {
@@ -162,21 +168,11 @@ TEST_CASE("gl: objects are culled on the GPU into the LOD and shadow lists the C
 namespace impostor_case {
 namespace {
 
-constexpr float kFlat = 0.3f, kHeightScale = 100.0f;
 constexpr double kSwitchM = 150.0;  // [objects] impostor_distance_m's default
 constexpr int kW = 160, kH = 90;
 
 Settings treeScene(const std::filesystem::path& map) {
-    Settings s;
-    s.terrain.heightmap = map.string();
-    s.terrain.size_m = 8192.0f;
-    s.terrain.height_scale_m = kHeightScale;
-    s.sky.enabled = false;
-    s.debug.grid = false;
-    s.lights.enabled = false;
-    s.grass.enabled = false;
-    s.water.enabled = false;
-    s.ssao.enabled = false;
+    Settings s = bareScene(map);
     s.taa.enabled = false;
     s.shadows.enabled = false;
     ObjectInstanceSpec o;
@@ -321,7 +317,6 @@ TEST_CASE("gl: an impostor at the switch distance covers the mesh's pixels with 
 namespace transparent_case {
 namespace {
 
-constexpr float kFlat = 0.3f, kHeightScale = 100.0f;
 
 // A 2 x 2 m double-sided pane in the model's x-y plane, BLEND, the given colour at alpha 0.5.
 Model pane(glm::vec3 colour) {
@@ -349,16 +344,7 @@ Model pane(glm::vec3 colour) {
 }
 
 Settings paneScene(const std::filesystem::path& map) {
-    Settings s;
-    s.terrain.heightmap = map.string();
-    s.terrain.size_m = 8192.0f;
-    s.terrain.height_scale_m = kHeightScale;
-    s.sky.enabled = false;
-    s.debug.grid = false;
-    s.lights.enabled = false;
-    s.grass.enabled = false;
-    s.water.enabled = false;
-    s.ssao.enabled = false;
+    Settings s = bareScene(map);
     s.taa.enabled = false;
     s.shadows.enabled = false;
     return s;
