@@ -78,6 +78,7 @@ KNOWN = {
     ("sky/sky_reference_image.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("sky/clouds/cloud_model.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("sky/clouds/clouds.h", "config/settings.h"): SETTINGS_STRUCTS,
+    ("sky/clouds/sun_visibility.h", "config/settings.h"): SETTINGS_STRUCTS,  # issue 23 #6, merged after the layering check
     ("sky/weather/weather.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("sky/weather/weather_model.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("terrain/grass/grass.h", "config/settings.h"): SETTINGS_STRUCTS,
