@@ -322,6 +322,7 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
     report.counters["lights.skipped"] = double(st.skipped);  // below [lights] min_screen_px
     report.counters["lights.build_ms"] = st.build_ms;
     report.counters["lights.memory_bytes"] = double(st.memory_bytes);
+    report.counters["lights.chunks"] = double(st.chunks);  // draws per pass that shades them (local_lights.h kLightChunk)
     return any;
 }
 
@@ -526,6 +527,8 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         if (local_lights) {
             forward.lights_define = local_lights_->define();
             forward.bind_lights = [this] { local_lights_->bindForForward(); };
+            forward.light_chunk = kLightChunk;
+            forward.light_chunks = local_lights_->chunks();
         }
         objects_->addTransparentPass(graph, rc, s.objects, forward, scene);
         report.counters["objects.transparent"] = double(objects_->transparentDrawn());

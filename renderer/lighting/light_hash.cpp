@@ -90,6 +90,7 @@ struct LightHash::Impl {
     std::vector<PerfectSpatialHash> data;  // [0, L]; data[0] unused
     std::vector<std::uint32_t> indices;
     std::size_t garbage = 0;
+    std::size_t longest = 0;  // LightHashStats::longest_list
     std::size_t indices_dirty = 0;
     std::size_t pairs = 0;  // (leaf cell, light) pairs
     PerfectSpatialHash empty_table;
@@ -172,6 +173,7 @@ struct LightHash::Impl {
         data.clear();
         indices.clear();
         garbage = 0;
+        longest = 0;
         indices_dirty = 0;
         pairs = 0;
     }
@@ -209,6 +211,7 @@ struct LightHash::Impl {
     std::uint64_t allocate(const std::vector<std::uint32_t>& list) {
         std::uint64_t offset = indices.size();
         indices.insert(indices.end(), list.begin(), list.end());
+        longest = std::max(longest, list.size());
         return offset | std::uint64_t(list.size()) << 32;
     }
     void release(std::uint64_t value) { garbage += std::size_t(value >> 32); }
@@ -330,11 +333,13 @@ struct LightHash::Impl {
     void compact() {
         std::vector<std::uint32_t> fresh;
         fresh.reserve(indices.size() - garbage);
+        longest = 0;
         for (int l = 1; l <= L; ++l) {
             PerfectSpatialHash& t = data[std::size_t(l)];
             for (const auto& [k, v] : t.entries()) {
                 std::size_t offset = std::size_t(v & 0xFFFFFFFFu), count = std::size_t(v >> 32);
                 std::uint64_t nv = std::uint64_t(fresh.size()) | std::uint64_t(count) << 32;
+                longest = std::max(longest, count);
                 fresh.insert(fresh.end(), indices.begin() + std::ptrdiff_t(offset),
                              indices.begin() + std::ptrdiff_t(offset + count));
                 t.set(k, nv);
@@ -363,6 +368,7 @@ struct LightHash::Impl {
         stats.leaf_cells = leaves.size();
         stats.index_count = indices.size();
         stats.index_garbage = garbage;
+        stats.longest_list = longest;
         // Estimated in O(1): hash-map nodes (key, value, bucket, allocator overhead) at 64 bytes,
         // each (cell, light) pair as 4 bytes in the cell's list and 8 in the light's cell list.
         cpu += leaves.size() * 64 + pairs * 12;

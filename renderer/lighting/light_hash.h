@@ -87,6 +87,7 @@ struct LightHashStats {
     int levels = 0;           // L; 0 when there are no lights with radius > 0
     std::size_t branch_nodes = 0, filled_leaves = 0, leaf_cells = 0;  // leaf_cells: filled cells at level L
     std::size_t index_count = 0, index_garbage = 0;                   // entries of indices(), of them unused
+    std::size_t longest_list = 0;  // longest leaf list written since the last build or compaction: >= every live list
     std::size_t gpu_bytes = 0, cpu_bytes = 0;
     // What the last build() / update() did.
     bool full_rebuild = false;

@@ -148,6 +148,8 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         hash_uploaded_ = hash_uploaded_ && !changed && !animated;
     }
     stats_.count = animated_.size();
+    stats_.longest_range = 0;
+    stats_.chunks = 1;
     if (animated_.empty()) return false;
 
     // The method: hashed needs its octree; when it cannot be built within the memory bound,
@@ -293,6 +295,24 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         u.hash_origin = glm::vec4(glm::vec3(o), float(hash_.nodeSize()));
     }
     grid_ubo_.upload(&u, sizeof(u), "lights.grid");
+
+    // The draws each lit pass makes (lights.glsl chunkOf): a pixel's range holds at most every
+    // light on the GPU (naive, an overflowed cell; tiled and clustered lists stop at 4,096), or
+    // for hashed its list (the octree's longest). Said once: past one chunk every pass that
+    // shades local lights (lights.shade, water.surface, objects.transparent) draws again.
+    stats_.longest_range = stats_.method == LightCulling::Hashed ? std::uint64_t(stats_.hash.longest_list) : n;
+    stats_.chunks = std::uint32_t(std::max<std::uint64_t>(1, (stats_.longest_range + kLightChunk - 1) / kLightChunk));
+    if (stats_.chunks > 1 && !chunks_warned_)
+        std::fprintf(stderr,
+                     "vista: lights: %s %llu lights, more than one shader invocation may loop over on llvmpipe "
+                     "(65,535 iterations in all): every pass that shades local lights (lights.shade, water.surface, "
+                     "objects.transparent) draws %u times, %u lights a draw (lights.chunks)%s.\n",
+                     stats_.method == LightCulling::Hashed ? "the longest hashed light list holds" : "a pixel may shade all",
+                     (unsigned long long)stats_.longest_range, stats_.chunks, kLightChunk,
+                     stats_.method == LightCulling::Naive || stats_.method == LightCulling::Hashed
+                         ? ""
+                         : "; the draws past the first shade only overflowed cells (lights.overflow)");
+    chunks_warned_ = chunks_warned_ || stats_.chunks > 1;
 
     stats_.memory_bytes = 0;
     for (const GpuBuffer* b : {&lights_buf_, &spheres_buf_, &cells_buf_, &indices_buf_, &hash_buf_, &grid_ubo_, &pool_buf_})
@@ -500,11 +520,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             glEnablei(GL_BLEND, 0);
             glBlendFunci(0, GL_ONE, GL_ONE);
             if (data.heat.valid()) glDisablei(GL_BLEND, 1);
-            // One draw per chunk of "every light" (naive, overflowed cells; lights.glsl), added up;
-            // hashed ranges are always lists.
-            const std::uint32_t n = std::uint32_t(order_scratch_.size());
-            const std::uint32_t draws = method == LightCulling::Hashed ? 1 : std::max<std::uint32_t>(1, (n + kLightChunk - 1) / kLightChunk);
-            for (std::uint32_t k = 0; k < draws; ++k) {
+            // One draw per chunk of the ranges (lights.glsl chunkOf), added up.
+            for (std::uint32_t k = 0; k < stats_.chunks; ++k) {
                 glUniform2ui(0, k * kLightChunk, kLightChunk);
                 if (culled) {  // drawn only when lights.cull found a tile with a light
                     glBindVertexArray(rc.empty_vao);

@@ -57,9 +57,10 @@ std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeigh
 
 // Longest list a tile or cluster keeps (the culling pass's shared-memory list).
 inline constexpr int kMaxLightsPerCell = 4096;
-// Lights one lights.shade draw shades for "every light" ranges (naive, overflowed cells); more
-// lights take more draws. Below llvmpipe's 65,535 loop iterations per shader invocation, with
-// room for the other loops of the shader (spot shadow filter taps).
+// Lights one draw shades of a range (lights.glsl chunkOf): "every light" (naive, overflowed
+// cells) or a list; longer ranges take more draws (LocalLights::chunks()), deferred and forward.
+// Below llvmpipe's 65,535 loop iterations per shader invocation, with room for the other loops
+// of the shader (spot shadow filter taps, the sea's waves and reflection march).
 inline constexpr std::uint32_t kLightChunk = 32768;
 
 // Lights the settings describe (explicit entries, then volumes), before animation. 0 when
@@ -78,6 +79,8 @@ struct LocalLightStats {
     LightCulling method = LightCulling::Clustered;  // the method used (hashed falls back to clustered when it cannot build)
     int tiles_x = 0, tiles_y = 0, slices = 0;
     std::uint64_t overflow = 0;     // overflowed cells, as last read back (a few frames late)
+    std::uint64_t longest_range = 0;  // most lights one pixel's range can hold: the lights on the GPU (hashed: the longest list)
+    std::uint32_t chunks = 1;       // draws of kLightChunk lights that cover longest_range (each lit pass draws this many)
     LightHashStats hash;            // hashed only
     std::size_t hash_upload_bytes = 0;  // hashed: bytes of tables and index list uploaded this frame
 };
@@ -114,8 +117,11 @@ public:
     // the define (LIGHTS_NAIVE, _TILED, _CLUSTERED or _HASHED), include
     // renderer/lighting/shaders/lights.glsl and call forwardLocalLights(); bind the buffers first. With
     // tiled or clustered culling the frame must have asked for LightPassOptions::forward.
+    // A forward surface is shaded in chunks() draws: the first with chunk (0, kLightChunk), then
+    // for k = 1 .. chunks() - 1 (k kLightChunk, kLightChunk), added where its depth is equal.
     const char* define() const;
     void bindForForward() const;
+    std::uint32_t chunks() const { return stats_.chunks; }
     std::span<const Light> lights() const { return animated_; }  // this frame's, world space
 
 private:
@@ -151,6 +157,7 @@ private:
     std::uint32_t pool_demand_ = 0;   // entries the pool was asked for, as last read back
     std::size_t write_slot_ = 0;  // overflow ring slot the next cull pass writes
     bool overflow_warned_ = false;
+    bool chunks_warned_ = false;
     LocalLightStats stats_;
 };
 

@@ -65,6 +65,10 @@ std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
             {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_TILED"}},
             {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_CLUSTERED"}},
             {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_HASHED"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_NAIVE", "LIGHT_CHUNK"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_TILED", "LIGHT_CHUNK"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_CLUSTERED", "LIGHT_CHUNK"}},
+            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_HASHED", "LIGHT_CHUNK"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS", "ALPHA_MASK"}}};
 }

@@ -38,6 +38,9 @@ struct ForwardLight {
     glm::vec3 sun_irradiance{0.0f}, sky_up{0.0f}, ground_up{0.0f};  // as renderer/lighting/deferred.h SunAndSky
     std::string lights_define;          // LocalLights::define() ("" without local lights)
     std::function<void()> bind_lights;  // LocalLights::bindForForward()
+    // Each surface is shaded in light_chunks draws of light_chunk lights (LocalLights::chunks(),
+    // kLightChunk): the blended one, then the rest added where its depth is equal.
+    std::uint32_t light_chunk = 0, light_chunks = 1;
 };
 // Transparent (instance, primitive) pairs sorted and drawn per frame at most (the nearest).
 constexpr std::size_t kMaxTransparentItems = 4096;

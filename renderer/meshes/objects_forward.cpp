@@ -4,6 +4,12 @@
 // reads, and blended premultiplied over what is behind. Sorting is per (instance, primitive) by
 // the distance of the primitive's centre, on the CPU: transparent parts are few (windows), and
 // the nearest kMaxTransparentItems are drawn, one draw each.
+// Local lights past the first chunk (ForwardLight::light_chunks > 1: more lights than one shader
+// invocation may loop over on llvmpipe) are added to each item right after its blended draw, one
+// draw per chunk with depth test EQUAL (variant LIGHT_CHUNK: the light only, alpha 0). The blend
+// adds them unattenuated, as the item's own light, before anything nearer is blended over it, so
+// back-to-front order stays exact. Where an item's own faces overlap on screen, only the layer
+// left in the depth buffer (its nearest drawn) gets the further chunks.
 #include "renderer/meshes/objects.h"
 
 #include "renderer/bindings.h"
@@ -95,26 +101,53 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             std::vector<std::string> defines{"FORWARD"};
             if (!light.lights_define.empty()) defines.push_back(light.lights_define);
             const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+            const bool lit = !light.lights_define.empty();
+            const std::uint32_t chunks = lit ? std::max<std::uint32_t>(light.light_chunks, 1) : 1;
+            GLuint chunk_program = 0;
+            if (chunks > 1) {
+                defines.push_back("LIGHT_CHUNK");
+                chunk_program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+            }
             glUseProgram(program);
             if (light.bind_lights) light.bind_lights();
             const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
-            glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+            for (GLuint p : {program, chunk_program}) {
+                if (p == 0) continue;
+                glProgramUniform3f(p, 1, camera.x, camera.y, camera.z);
+                glProgramUniformMatrix4fv(p, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
+            }
             glProgramUniform3f(program, 7, light.sun_irradiance.r, light.sun_irradiance.g, light.sun_irradiance.b);
             glProgramUniform3f(program, 8, light.sky_up.r, light.sky_up.g, light.sky_up.b);
             glProgramUniform3f(program, 9, light.ground_up.r, light.ground_up.g, light.ground_up.b);
-            glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
+            if (lit) glProgramUniform2ui(program, 10, 0, light.light_chunk);
             glBindVertexArray(vao_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, forward_list_.id());
             for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
             for (std::size_t i = 0; i < items.size(); ++i) {
                 const Blend& bl = blend_[std::size_t(items[i].blend)];
+                auto draw = [&] {
+                    glDrawElementsInstancedBaseVertex(
+                        GL_TRIANGLES, GLsizei(bl.primitive.index_count), GL_UNSIGNED_INT,
+                        reinterpret_cast<const void*>(std::size_t(index_base_[std::size_t(bl.model)] + bl.primitive.first_index) * 4),
+                        1, GLint(vertex_base_[std::size_t(bl.model)]));
+                };
                 glProgramUniform1ui(program, 0, GLuint(i));  // the instance is order[i]
                 setMaterial(program, bl.model, bl.primitive.material, emissive_nits_, false);
-                glDrawElementsInstancedBaseVertex(
-                    GL_TRIANGLES, GLsizei(bl.primitive.index_count), GL_UNSIGNED_INT,
-                    reinterpret_cast<const void*>(std::size_t(index_base_[std::size_t(bl.model)] + bl.primitive.first_index) * 4), 1,
-                    GLint(vertex_base_[std::size_t(bl.model)]));
+                draw();
+                if (chunks == 1) continue;
+                glUseProgram(chunk_program);
+                glProgramUniform1ui(chunk_program, 0, GLuint(i));
+                setMaterial(chunk_program, bl.model, bl.primitive.material, emissive_nits_, false);
+                glDepthFunc(GL_EQUAL);
+                glDepthMask(GL_FALSE);
+                for (std::uint32_t k = 1; k < chunks; ++k) {
+                    glProgramUniform2ui(chunk_program, 10, k * light.light_chunk, light.light_chunk);
+                    draw();
+                }
+                glDepthFunc(GL_GREATER);
+                glDepthMask(GL_TRUE);
+                glUseProgram(program);
             }
             for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
             glBindVertexArray(rc.empty_vao);

@@ -161,7 +161,8 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         [this, &rc, sky, lights, defines, shadows](const SurfaceData& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
-            glUseProgram(rc.shaders.get(kSurfaceProgram, defines)->id());
+            const GLuint program = rc.shaders.get(kSurfaceProgram, defines)->id();
+            glUseProgram(program);
             glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
             if (sky) glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_ATMOSPHERE, sky->frameUniformBuffer());
             if (lights) lights->bindForForward();
@@ -180,8 +181,27 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             glDepthMask(GL_TRUE);
             glDisable(GL_CULL_FACE);  // seen from above and from below
             glBindVertexArray(vao_.id());
-            glDrawElements(GL_TRIANGLES, GLsizei(6 * std::size_t(grid_.rings) * std::size_t(grid_.segments)), GL_UNSIGNED_INT,
-                           nullptr);
+            const GLsizei count = GLsizei(6 * std::size_t(grid_.rings) * std::size_t(grid_.segments));
+            const bool lit = lights && view_ == WaterView::Shaded;
+            if (lit) glProgramUniform2ui(program, 0, 0, kLightChunk);
+            glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+            if (lit && lights->chunks() > 1) {
+                // The lights past the first chunk (lights.glsl chunkOf): the surface again, its
+                // local light only, added where the depth is the surface's own.
+                const GLuint chunk = rc.shaders.get(kSurfaceProgram, {lights->define(), "WATER_LIGHT_CHUNK"})->id();
+                glUseProgram(chunk);
+                glDepthFunc(GL_EQUAL);
+                glDepthMask(GL_FALSE);
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_ONE, GL_ONE);
+                for (std::uint32_t k = 1; k < lights->chunks(); ++k) {
+                    glProgramUniform2ui(chunk, 0, k * kLightChunk, kLightChunk);
+                    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+                }
+                glDisable(GL_BLEND);
+                glBlendFunc(GL_ONE, GL_ZERO);
+                glDepthMask(GL_TRUE);
+            }
             glBindVertexArray(rc.empty_vao);
             glDisable(GL_DEPTH_TEST);
             if (data.shadow.valid()) {
@@ -226,6 +246,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms() {
     for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
         programs.push_back({kSurfaceProgram, {method}});
         programs.push_back({kSurfaceProgram, {method, "HAS_SUN_SHADOW"}});
+        programs.push_back({kSurfaceProgram, {method, "WATER_LIGHT_CHUNK"}});
     }
     return programs;
 }

@@ -66,7 +66,8 @@ public:
                  const SkyAtmosphere* sky, double ground_m, float rain_ripples = 0.0f);
     // water.copy and water.surface over targets (hdr and depth). sky: this frame's atmosphere
     // after addLutPasses (null: no sky); lights: the local lights whose passes ran this frame
-    // (null: none) — their lists must cover forward depths (LightPassOptions::forward).
+    // (null: none) — their lists must cover forward depths (LightPassOptions::forward); past
+    // their first chunk (LocalLights::chunks()) the surface is drawn again per chunk, additively.
     // shadows: this frame's sun cascades (invalid: none).
     void addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
                           const LocalLights* lights, const SunShadowInput& shadows);

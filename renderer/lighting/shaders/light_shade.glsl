@@ -1,10 +1,10 @@
 // "lights.shade": every lit G-buffer pixel shades the local lights its culling method gives it
 // (LIGHTS_NAIVE: all; LIGHTS_TILED / LIGHTS_CLUSTERED: its tile's or cluster's list; LIGHTS_HASHED:
 // the hashed octree's list for its world position), added to the HDR target.
-// "Every light" ranges (naive, overflowed cells) are shaded in chunks, one draw per chunk
-// (u_light_chunk, LocalLights::kLightChunk): llvmpipe ends a shader invocation's loops after
-// 65,535 iterations in all (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS), which silently dropped every
-// light past the 65,535th (issue 19, defect 6). Lists stay in the first draw.
+// Ranges are shaded in chunks, one additive draw per chunk (u_light_chunk, lights.glsl chunkOf,
+// LocalLights::chunks()): llvmpipe ends a shader invocation's loops after 65,535 iterations in
+// all (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS), which silently dropped every light past the
+// 65,535th (issue 19, defect 6). Tiled and clustered lists (at most 4,096) fit the first draw.
 // COUNT_LIGHTS adds the counters lights.evaluations (lights shaded) and lights.exact (of them,
 // those that reach the pixel); LIGHT_HEAT writes the evaluations per pixel for the debug view.
 #include "../../shaders/fullscreen.glsl"
@@ -24,7 +24,7 @@ layout(std430, binding = BINDING_COUNTERS) buffer Evaluations { uint u_eval_lo, 
 layout(std430, binding = BINDING_AUX) buffer Exact { uint u_exact_lo, u_exact_hi; };
 #endif
 layout(location = 0) out vec4 o_color;
-layout(location = 0) uniform uvec2 u_light_chunk;  // this draw's chunk of "every light" ranges: first light, light count
+layout(location = 0) uniform uvec2 u_light_chunk;  // this draw's chunk of every range: first entry, entry count
 #ifdef LIGHT_HEAT
 layout(location = 1) out float o_heat;
 #endif
@@ -46,10 +46,8 @@ void main() {
 #ifdef LIGHT_HEAT
     o_heat = float(range.count);
 #endif
-    if (range.all) {  // this draw's chunk of every light
-        range.first = u_light_chunk.x;
-        range.count = u_light_chunk.x < range.count ? min(range.count - u_light_chunk.x, u_light_chunk.y) : 0u;
-    } else if (u_light_chunk.x != 0u) {  // a list: shaded in the first draw
+    range = chunkOf(range, u_light_chunk);
+    if (range.count == 0u) {  // nothing in this draw's chunk
         o_color = vec4(0.0);
         return;
     }

@@ -44,6 +44,17 @@ struct LightRange {
     bool all;
 };
 
+// The part of a range one draw shades: entries [chunk.x, chunk.x + chunk.y) of it. llvmpipe ends
+// a shader invocation's loops after 65,535 iterations in all (gallivm's
+// LP_MAX_TGSI_LOOP_ITERATIONS) and silently drops every light past them, so a pass whose ranges
+// can be longer draws once per chunk of LocalLights::kLightChunk lights and adds the draws up
+// (LocalLights::chunks(); issue 19, defect 6). Every range is cut the same way: "every light"
+// (naive, overflowed cells) and lists (hashed lists have no length cap).
+LightRange chunkOf(LightRange range, uvec2 chunk) {
+    uint begin = min(chunk.x, range.count);
+    return LightRange(range.first + begin, min(range.count - begin, chunk.y), range.all);
+}
+
 // Exponential depth slice of a view depth (m): floor(ln(depth / near_0) / ln ratio).
 uint sliceOf(float view_depth) {
     float k = floor(log(max(view_depth, 1e-30) / u_slices.x) * u_slices.y);
@@ -156,11 +167,18 @@ LightRange methodRange(ivec2 pixel, vec3 position, float view_depth) {
 #endif
 }
 
-// Forward shading (transparent surfaces, drawn after lights.cull with LocalLights::bindForForward):
-// the local light a surface at a camera-relative position reflects toward the eye, through the
-// same lists the deferred pass uses. `evaluated` and `exact` count lights shaded and reaching.
-vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, out uint evaluated, out uint exact) {
-    LightRange range = methodRange(pixel, position, max(-(mat3(u_view) * position).z, 0.0));
+// Forward shading (the sea, transparent surfaces; drawn after lights.cull with
+// LocalLights::bindForForward): the candidate lights of a surface at a camera-relative position
+// seen through a pixel, the part of them this draw's chunk covers (chunkOf: a forward pass draws
+// its surfaces again, additively, for each further chunk).
+LightRange forwardRange(vec3 position, ivec2 pixel, uvec2 chunk) {
+    return chunkOf(methodRange(pixel, position, max(-(mat3(u_view) * position).z, 0.0)), chunk);
+}
+
+// The local light such a surface reflects toward the eye from this draw's chunk of its lights.
+// `evaluated` and `exact` count lights shaded and reaching.
+vec3 forwardLocalLights(Surface s, vec3 position, ivec2 pixel, uvec2 chunk, out uint evaluated, out uint exact) {
+    LightRange range = forwardRange(position, pixel, chunk);
     evaluated = range.count;
     return shadeRange(range, s, position, safeNormalize(-position), exact);
 }

@@ -11,7 +11,10 @@
 // (object_common.glsl impostorFade); a variant, so the other draws pay nothing. FORWARD: BLEND
 // materials in "objects.transparent", sorted back to front on the CPU: lit here by the sun, the
 // hemisphere ambient and the local lights' forward lists (LIGHTS_NAIVE, _TILED, _CLUSTERED or
-// _HASHED, as the sea), written premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA).
+// _HASHED, as the sea), written premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA); u_light_chunk is
+// the part of each light range it shades. FORWARD + LIGHT_CHUNK: a further chunk of the local
+// lights only, alpha 0, drawn right after the item with depth test EQUAL (objects_forward.cpp);
+// gl_Position is invariant in the FORWARD variants so the two draws' depths are equal.
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "object_common.glsl"
@@ -29,9 +32,13 @@ layout(location = 6) uniform float u_fade_centre_z;  // ... and z
 layout(location = 7) uniform vec3 u_sun_irradiance;  // FORWARD: the sun at normal incidence (HDR units)
 layout(location = 8) uniform vec3 u_sky_up;          // FORWARD: sky irradiance on an up-facing surface
 layout(location = 9) uniform vec3 u_ground_up;       // FORWARD: ground bounce on a down-facing surface
+layout(location = 10) uniform uvec2 u_light_chunk;   // FORWARD with lights: this draw's chunk of each light range (lights.glsl chunkOf)
 layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
 
 #ifdef VERTEX_SHADER
+#ifdef FORWARD
+invariant gl_Position;
+#endif
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_tangent;
@@ -107,6 +114,13 @@ void main() {
 #ifdef IMPOSTOR_FADE
     if (impostorFadeNoise(gl_FragCoord.xy) < v_fade) discard;
 #endif
+#ifdef LIGHT_CHUNK
+    // Screen derivatives (the tangent frame below) are taken before any fragment is discarded.
+    vec3 dp1 = dFdx(v_position), dp2 = dFdy(v_position);
+    vec2 du1 = dFdx(v_uv), du2 = dFdy(v_uv);
+    LightRange range = forwardRange(v_position, ivec2(gl_FragCoord.xy), u_light_chunk);
+    if (range.count == 0u) discard;  // nothing in this chunk
+#endif
     vec4 base = u_base_color * texture(t_base_color, v_uv);
 #ifdef ALPHA_MASK
     if (base.a < u_emissive.w) discard;
@@ -116,8 +130,10 @@ void main() {
     vec3 t = v_tangent.xyz;
     float handed = v_tangent.w;
     if (handed == 0.0) {
+#ifndef LIGHT_CHUNK
         vec3 dp1 = dFdx(v_position), dp2 = dFdy(v_position);
         vec2 du1 = dFdx(v_uv), du2 = dFdy(v_uv);
+#endif
         t = dp1 * du2.y - dp2 * du1.y;
         handed = (du1.x * du2.y - du2.x * du1.y) < 0.0 ? -1.0 : 1.0;
     }
@@ -143,6 +159,10 @@ void main() {
     float alpha = clamp(base.a, 0.0, 1.0);
     s.albedo *= alpha;
     vec3 v = safeNormalize(-v_position);
+#ifdef LIGHT_CHUNK
+    uint exact;
+    o_color = vec4(shadeRange(range, s, v_position, v, exact), 0.0);
+#else
     vec3 l = u_sun_dir.xyz;
     vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, n, l, v) * u_sun_irradiance * max(dot(n, l), 0.0);
     float nv = clamp(dot(n, v), 0.0, 1.0);
@@ -152,9 +172,10 @@ void main() {
              fr / PI * mix(u_ground_up, u_sky_up, r.y * 0.5 + 0.5);
 #ifdef OBJECT_LOCAL_LIGHTS
     uint evaluated, exact;
-    color += forwardLocalLights(s, v_position, ivec2(gl_FragCoord.xy), evaluated, exact);
+    color += forwardLocalLights(s, v_position, ivec2(gl_FragCoord.xy), u_light_chunk, evaluated, exact);
 #endif
     o_color = vec4(color + emissive, alpha);
+#endif
 #else
     encodeSurface(s, o_albedo, o_normal);
     o_color = vec4(emissive, 1.0);

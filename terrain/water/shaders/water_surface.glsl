@@ -11,11 +11,17 @@
 // through it, or the water by total internal reflection. Variants: the local-light method
 // (LIGHTS_NAIVE, _TILED, _CLUSTERED, _HASHED) or none; HAS_SUN_SHADOW (the sun's cascades).
 // WATER_VIEW 1 normals, 2 foam, 3 water depth: debug views (no lights or shadows).
+// WATER_LIGHT_CHUNK (with a method): a further chunk of the local lights only (lights.glsl
+// chunkOf), drawn additively over the shaded surface with depth test EQUAL, as much of the
+// colour as the lights reach through the foam ((1 - foam) x light: the shaded surface mixes the
+// foam over its lit colour); u_light_chunk says which (the shaded surface draws the first).
+// gl_Position is invariant so the chunks' depths equal the surface's.
 // Both stages: included once per file (the shader library expands each file once).
 #include "../../../renderer/shaders/common.glsl"
 #include "waves.glsl"
 
 #ifdef VERTEX_SHADER
+invariant gl_Position;
 out vec3 v_position;  // camera-relative, displaced
 out vec2 v_rest;      // camera-relative rest position (x, z)
 void main() {
@@ -42,6 +48,7 @@ void main() {
 #if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
 #define WATER_LOCAL_LIGHTS
 #include "../../../renderer/lighting/shaders/lights.glsl"
+layout(location = 0) uniform uvec2 u_light_chunk;  // this draw's chunk of each light range: first entry, entry count
 #endif
 #ifdef HAS_SUN_SHADOW
 #include "../../../renderer/shadows/shaders/shadows.glsl"
@@ -116,20 +123,74 @@ vec3 traceReflection(vec3 origin, vec3 dir, out float weight) {
     return vec3(0.0);
 }
 
-void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec2 uv = (vec2(pixel) + 0.5) * u_viewport.zw;
-    float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));
-    WaveSample ws = evaluateWaves(v_rest, footprint);
+// The shading normal: the waves' (ws), with rain rings near the eye only (their 6 cm wavelength
+// is gone within a few tens of metres).
+vec3 surfaceNormal(WaveSample ws, float dist) {
     vec3 n = ws.normal;
-    vec3 pos = v_position;
-    float dist = max(length(pos), 1e-4);
-    // Rain rings, near the eye only (their 6 cm wavelength is gone within a few tens of metres).
     float ripples = w_rain.w * (1.0 - smoothstep(15.0, 40.0, dist));
     if (ripples > 0.0) {
         vec3 r = rainRippleNormal(mod(w_rain.xy + v_rest, RAIN_RIPPLE_WRAP_M), w_rain.z, ripples);
         n = normalize(n + vec3(r.x, 0.0, r.z));
     }
+    return n;
+}
+
+// Seen from above: the shading normal kept facing the eye (grazing back slopes).
+vec3 facingEye(vec3 n, vec3 v) {
+    float nv = dot(n, v);
+    return nv < 0.02 ? normalize(n + v * (0.02 - nv)) : n;
+}
+
+// Sun glitter's roughness: GGX widened by the slopes the footprint removed (no aliasing far away).
+float glitterRoughness(WaveSample ws) {
+    float r0 = w_surface.y;
+    return min(sqrt(sqrt(r0 * r0 * r0 * r0 + 2.0 * ws.lost_slope_variance)), 1.0);
+}
+
+// Foam cover: bands running up the shore where the water (column metres deep) is shallow, and
+// squeezed crests.
+float foamCover(WaveSample ws, float column) {
+    float foam = 0.0;
+    if (w_surface.w > 0.0 && column < w_surface.w) {
+        float shore = 1.0 - column / w_surface.w;
+        float bands = 0.5 + 0.5 * sin(column / w_surface.w * 9.0 + w_foam.w + 3.0 * ws.displacement.y);
+        foam = shore * shore * (0.4 + 0.6 * smoothstep(0.35, 0.75, bands));
+    }
+    return clamp(foam + w_scatter.w * (1.0 - smoothstep(0.2, 0.5, ws.jacobian)), 0.0, 1.0);
+}
+
+#ifdef WATER_LIGHT_CHUNK
+// A further chunk of the local lights on the surface seen from above (see the top).
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));  // before any discard
+    vec3 pos = v_position;
+    LightRange range = forwardRange(pos, pixel, u_light_chunk);
+    if (range.count == 0u || pos.y > 0.0) discard;  // nothing in this chunk, or seen from below (no local lights)
+    WaveSample ws = evaluateWaves(v_rest, footprint);
+    float dist = max(length(pos), 1e-4);
+    vec3 v = -pos / dist;
+    float scene_depth = texelFetch(u_scene_depth, pixel, 0).r;
+    vec3 scene_pos = positionFromDepth((vec2(pixel) + 0.5) * u_viewport.zw, max(scene_depth, 1e-30));
+    float foam = foamCover(ws, scene_depth > 0.0 ? max(pos.y - scene_pos.y, 0.0) : 1e6);
+    Surface s;
+    s.albedo = w_foam.rgb * foam;
+    s.roughness = glitterRoughness(ws);
+    s.normal = facingEye(surfaceNormal(ws, dist), v);
+    s.f0 = kWaterF0;
+    s.lit = true;
+    uint exact;
+    o_color = vec4((1.0 - foam) * shadeRange(range, s, pos, v, exact), 0.0);
+}
+#else
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec2 uv = (vec2(pixel) + 0.5) * u_viewport.zw;
+    float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));
+    WaveSample ws = evaluateWaves(v_rest, footprint);
+    vec3 pos = v_position;
+    float dist = max(length(pos), 1e-4);
+    vec3 n = surfaceNormal(ws, dist);
     vec3 v = -pos / dist;
     vec3 l = u_sun_dir.xyz;
     // The sun's visibility through the terrain's cascaded shadows (taken on the still surface's
@@ -153,10 +214,8 @@ void main() {
     vec3 color;
     float foam = 0.0;
     if (!below) {
-        // Keep the shading normal facing the eye (grazing back slopes), then Fresnel.
-        float nv = dot(n, v);
-        if (nv < 0.02) n = normalize(n + v * (0.02 - nv));
-        nv = clamp(dot(n, v), 0.0, 1.0);
+        n = facingEye(n, v);
+        float nv = clamp(dot(n, v), 0.0, 1.0);
         float fresnel = kWaterF0 + (1.0 - kWaterF0) * pow(1.0 - nv, 5.0);
 
         // Reflection: screen-space where it finds the scene, the sky elsewhere.
@@ -190,18 +249,11 @@ void main() {
 
         color = fresnel * reflection + (1.0 - fresnel) * refracted;
 
-        // Sun glitter: GGX widened by the slopes the footprint removed (no aliasing far away).
-        float r0 = w_surface.y;
-        float roughness = min(sqrt(sqrt(r0 * r0 * r0 * r0 + 2.0 * ws.lost_slope_variance)), 1.0);
+        // Sun glitter.
+        float roughness = glitterRoughness(ws);
         color += evalBrdf(vec3(0.0), roughness, kWaterF0, n, l, v) * sun * max(dot(n, l), 0.0);
 
-        // Foam: bands running up the shore where the water is shallow, and squeezed crests.
-        if (w_surface.w > 0.0 && column < w_surface.w) {
-            float shore = 1.0 - column / w_surface.w;
-            float bands = 0.5 + 0.5 * sin(column / w_surface.w * 9.0 + w_foam.w + 3.0 * ws.displacement.y);
-            foam = shore * shore * (0.4 + 0.6 * smoothstep(0.35, 0.75, bands));
-        }
-        foam = clamp(foam + w_scatter.w * (1.0 - smoothstep(0.2, 0.5, ws.jacobian)), 0.0, 1.0);
+        foam = foamCover(ws, column);
 
 #ifdef WATER_LOCAL_LIGHTS
         Surface s;
@@ -211,7 +263,7 @@ void main() {
         s.f0 = kWaterF0;
         s.lit = true;
         uint evaluated, exact;
-        color += forwardLocalLights(s, pos, pixel, evaluated, exact);
+        color += forwardLocalLights(s, pos, pixel, u_light_chunk, evaluated, exact);  // the first chunk
 #endif
         vec3 foam_light = w_foam.rgb / PI * (sun * max(dot(n, l), 0.0) + mix(w_ground_up.rgb, w_sky_up.rgb, n.y * 0.5 + 0.5));
         color = mix(color, foam_light, foam);
@@ -240,4 +292,5 @@ void main() {
 #endif
     o_color = vec4(clamp(color, vec3(0.0), vec3(60000.0)), 0.0);
 }
+#endif
 #endif

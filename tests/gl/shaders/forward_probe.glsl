@@ -28,7 +28,7 @@ void main() {
     s.f0 = 0.04;
     s.lit = true;
     uint evaluated, exact;
-    vec3 color = forwardLocalLights(s, position, p, evaluated, exact);
+    vec3 color = forwardLocalLights(s, position, p, uvec2(0u, 0xFFFFFFFFu), evaluated, exact);  // the whole range
     uint reaching = 0u;
     for (uint i = 0u; i < u_grid.x; ++i) {
         bool reaches;
