@@ -344,43 +344,9 @@ TEST_CASE("gl: the GPU's light shading matches the double-precision CPU mirror (
     }
 }
 
-// Issue 19 defect 6: beyond the list capacities (shared tile list, per-cell cap, pool, hash
-// tables) every method must still light the same image as naive, and say when a list overflowed.
-// Small image so naive's loop over every light stays fast under llvmpipe.
-// Slow under llvmpipe (minutes: naive shades every light per pixel), so skipped in CI; run with
-// vista_gl_tests --no-skip '-tc=gl: 150?000*'. Failed before the chunked draws (150,000 lights:
-// exact 2,667 naive, 2,933 tiled/clustered, 12,608 hashed); now 12,608 for all four.
-TEST_CASE("gl: 150,000, 262,144 and 1,000,000 lights: every method lights the same image as naive" * doctest::skip()) {
-    struct Case {
-        const char* spec;
-        bool naive;  // naive's loop over 1M lights per pixel is the slow part: hashed is compared instead
-    };
-    for (const Case& c : {Case{"box -200 0 -200 200 30 200  count 150 10 100  radius 4  intensity 50  jitter 1", true},
-                          Case{"box -200 0 -200 200 30 200  count 64 64 64  radius 4  intensity 50  jitter 1", true},
-                          Case{"box -200 0 -200 200 30 200  count 100 100 100  radius 3  intensity 50  jitter 1", false}}) {
-        CAPTURE(c.spec);
-        Settings s = hillScene();
-        addVolume(s, "many", c.spec);
-        ViewParams small = kView;
-        small.width = 64;
-        small.height = 36;
-        const Lit ref = render(s, c.naive ? LightCulling::Naive : LightCulling::Hashed, small);
-        CHECK(ref.exact > 0);
-        for (LightCulling m : {LightCulling::Tiled, LightCulling::Clustered, LightCulling::Hashed}) {
-            CAPTURE(int(m));
-            const Lit lit = render(s, m, small);
-            std::printf("many lights %s method %d: exact %llu (ref %llu) overflow %llu diff %.3g\n", c.spec, int(m),
-                        (unsigned long long)lit.exact, (unsigned long long)ref.exact, (unsigned long long)lit.overflow,
-                        maxRelativeDiff(ref, lit));
-            CHECK(lit.exact == ref.exact);
-            CHECK(lit.nonfinite == 0);
-            CHECK(maxRelativeDiff(ref, lit) <= 1e-3);
-        }
-    }
-}
-
-// The CI-sized case of the one above: 70,000 lights (past llvmpipe's 65,535 loop iterations per
-// invocation, where naive's loop and overflowed cells' "every light" stopped) at 16x9.
+// Issue 19 defect 6, the CI-sized case of the 150,000 / 262,144 / 1,000,000-light test (in
+// forward_lights_test.cpp with the forward surfaces): 70,000 lights (past llvmpipe's 65,535 loop
+// iterations per invocation, where naive's loop and overflowed cells' "every light" stopped) at 16x9.
 TEST_CASE("gl: 70,000 lights at 16x9: every method lights the same image as naive") {
     Settings s = hillScene();
     addVolume(s, "many", "box -200 0 -200 200 30 200  count 70 10 100  radius 4  intensity 50  jitter 1");
