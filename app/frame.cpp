@@ -58,6 +58,9 @@ std::vector<ProgramKey> allPrograms() {
         programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
         programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS"}});
         programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_POINT_SHADOWS"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS", "HAS_POINT_SHADOWS"}});
+        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS", "HAS_POINT_SHADOWS"}});
     }
     for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"}) {
         programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method}});
@@ -280,9 +283,12 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     const glm::dmat4 view_proj(rc.matrices.view_proj);
     const double error_scale = screenErrorScale(rc.view.fov_deg, rc.view.height);
     const glm::dvec3 sun = sunDirection(s.sky);
-    // The shadowed spot lights' views are covered by the same selection (one LOD for all).
-    const std::span<const Frustum> spots = spot_shadows_ ? std::span<const Frustum>(spot_shadows_->frusta())
-                                                         : std::span<const Frustum>();
+    // The shadowed spot and point lights' views are covered by the same selection (one LOD for all).
+    light_shadow_frusta_.clear();
+    if (spot_shadows_) light_shadow_frusta_ = spot_shadows_->frusta();
+    if (point_shadows_)
+        light_shadow_frusta_.insert(light_shadow_frusta_.end(), point_shadows_->frusta().begin(), point_shadows_->frusta().end());
+    const std::span<const Frustum> spots(light_shadow_frusta_);
     if (!sunCastsShadows(s.shadows, sun)) {
         sun_shadows_.reset();  // no sun shadows: no passes, no shadow map
         terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, nullptr, spots);
@@ -333,6 +339,27 @@ bool FrameRenderer::prepareSpotShadows(const RenderContext& rc, const Settings& 
     }
     spot_shadows_.reset();  // no shadowed spot light: no pass, no atlas
     return false;
+}
+
+bool FrameRenderer::preparePointShadows(const RenderContext& rc, const Settings& s) {
+    if (s.shadows.enabled && s.shadows.point_enabled) {
+        if (!point_shadows_) point_shadows_ = std::make_unique<PointShadows>();
+        if (point_shadows_->prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
+    }
+    point_shadows_.reset();  // no shadowed point light: no pass, no cubes
+    return false;
+}
+
+PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                                   const ShadowCaster& extra, FrameReport& report) {
+    PointShadowInput input = point_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    local_lights_->setPointShadowSlots(*point_shadows_);
+    const PointShadowStats& st = point_shadows_->stats();
+    report.counters["shadows.point_candidates"] = double(st.candidates);
+    report.counters["shadows.point_shadowed"] = double(st.shadowed);
+    report.counters["shadows.point_unshadowed"] = double(st.unshadowed);
+    report.counters["shadows.point_caster_instances"] = double(st.caster_instances);
+    return input;
 }
 
 SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
@@ -408,6 +435,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     const bool local_lights = terrain && !shadow_view && prepareLocalLights(rc, s, report);
     if (!terrain) local_lights_.reset();
     if (!(local_lights && prepareSpotShadows(rc, s))) spot_shadows_.reset();
+    if (!(local_lights && preparePointShadows(rc, s))) point_shadows_.reset();
     // Grass is culled first: the shadow passes draw the same blades.
     BufferHandle blades;
     if (grass) {
@@ -422,7 +450,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     ShadowCaster grass_caster;
     if (blades.valid() && s.grass.cast_shadows)
         grass_caster = {blades, double(s.grass.radius_m),
-                        [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }};
+                        [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }, {}};
     // Objects are culled next; their cull pass follows the grass's, so the one caster handle the
     // shadow passes read orders them after both.
     BufferHandle object_lists;
@@ -440,12 +468,31 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
                         [this, &rc, grass_draw](const glm::mat4& m) {
                             if (grass_draw) grass_draw(m);
                             objects_->drawShadow(rc, m);
-                        }};
+                        },
+                        {}};
+    }
+    // The point-light cubes draw only the casters near each light: the objects within its radius,
+    // the grass (all within grass radius_m of the camera) where the light reaches into it.
+    if (grass_caster.valid()) {
+        const bool grass_casts = blades.valid() && s.grass.cast_shadows;
+        const bool objects_cast = object_lists.valid() && s.objects.cast_shadows;
+        grass_caster.draw_near = [this, &rc, &s, grass_casts, objects_cast, position = view.position](
+                                     const glm::dvec3& centre, double radius, std::span<const glm::mat4> faces,
+                                     const std::function<void(std::size_t)>& before) {
+            if (grass_casts && glm::length(centre - position) < radius + double(s.grass.radius_m))
+                for (std::size_t f = 0; f < faces.size(); ++f) {
+                    before(f);
+                    grass_->drawShadow(rc, s.grass, faces[f]);
+                }
+            if (objects_cast) objects_->drawShadowNear(rc, centre, radius, faces, before);
+        };
     }
     SpotShadowInput spot_input;
+    PointShadowInput point_input;
     if (terrain) {
         shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report, grass_caster);
         if (spot_shadows_) spot_input = addSpotShadowPass(graph, rc, s, grass_caster, report);
+        if (point_shadows_) point_input = addPointShadowPass(graph, rc, s, grass_caster, report);
         // Beyond the blades the terrain's grass band takes their mean colour.
         const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
         terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
@@ -490,6 +537,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
             // water.surface and objects.transparent shade them forward
             options.forward = request.forward_lights || s.water.enabled || (objects_ && objects_->hasTransparent());
             options.spot_shadows = &spot_input;
+            options.point_shadows = &point_input;
             local_lights_->addPasses(graph, rc, scene, counters_, options);
         }
     }
@@ -523,7 +571,10 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     // Glass and other BLEND materials over the sea, before the aerial perspective fogs both.
     if (object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
         const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
-        ForwardLight forward{light.sun_irradiance, light.sky_up, light.ground_up, "", nullptr};
+        ForwardLight forward;
+        forward.sun_irradiance = light.sun_irradiance;
+        forward.sky_up = light.sky_up;
+        forward.ground_up = light.ground_up;
         if (local_lights) {
             forward.lights_define = local_lights_->define();
             forward.bind_lights = [this] { local_lights_->bindForForward(); };
@@ -576,6 +627,8 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
     else if (s.debug.view == DebugView::SpotAtlas)
         display = addSpotAtlasViewPass(graph, rc, spot_input, spot_shadows_ ? spot_shadows_->tilesPerSide() : 0);
+    else if (s.debug.view == DebugView::PointShadows)
+        display = addPointShadowViewPass(graph, rc, point_input, point_shadows_ ? point_shadows_->cubes() : 0);
     else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image
         display = addDebugViewPass(graph, rc, s.debug, scene);
 
@@ -604,6 +657,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     if (local_lights_) report.counters["lights.memory_bytes"] = double(local_lights_->stats().memory_bytes);
     if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
     if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
+    if (point_shadows_) report.counters["shadows.point_memory_bytes"] = double(point_shadows_->memoryBytes());
     if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
     if (objects_) report.counters["objects.memory_bytes"] = double(objects_->memoryBytes());
     if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
@@ -625,6 +679,7 @@ std::size_t FrameRenderer::gpuMemoryBytes() const {
            (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
            (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
            (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
+           (point_shadows_ ? point_shadows_->memoryBytes() : 0) +
            (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes() +
            (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes() +
            (objects_ ? objects_->memoryBytes() : 0);

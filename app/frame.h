@@ -16,6 +16,7 @@
 #include "postfx/chain.h"
 #include "postfx/taa.h"
 #include "renderer/blue_noise.h"
+#include "renderer/shadows/point_shadows.h"
 #include "renderer/shadows/spot_shadows.h"
 #include "renderer/shadows/sun_shadows.h"
 #include "sky/atmosphere.h"
@@ -94,6 +95,7 @@ public:
     LocalLights* localLights() { return local_lights_.get(); }  // null without local lights
     SunShadows* sunShadows() { return sun_shadows_.get(); }     // null while the sun casts no shadows
     SpotShadows* spotShadows() { return spot_shadows_.get(); }  // null while no spot light is shadowed
+    PointShadows* pointShadows() { return point_shadows_.get(); }  // null while no point light is shadowed
     Grass* grass() { return grass_.get(); }  // null while [grass] or [terrain] is off
     Weather* weather() { return weather_.get(); }  // null while [weather] is off
     Water* water() { return water_.get(); }  // null while [water] is off
@@ -145,6 +147,11 @@ private:
     // "shadows.spot_atlas" (terrain and `extra`), the lights' tiles and the shadows.spot_* counters.
     SpotShadowInput addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                       const ShadowCaster& extra, FrameReport& report);
+    // The shadowed point lights (false: none; then point_shadows_ is reset).
+    bool preparePointShadows(const RenderContext& rc, const Settings& s);
+    // "shadows.point_cubes" (terrain and `extra`), the lights' cubes and the shadows.point_* counters.
+    PointShadowInput addPointShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
+                                        const ShadowCaster& extra, FrameReport& report);
 
     ShaderLibrary shaders_;
     GlDevice device_;
@@ -162,6 +169,8 @@ private:
     double pre_exposure_ = 1.0;  // this frame's (sky/night_light.h), set by render()  // [water] enabled, level_m the lights were placed over
     std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
     std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
+    std::unique_ptr<PointShadows> point_shadows_;  // null while no point light is shadowed
+    std::vector<Frustum> light_shadow_frusta_;   // this frame's spot and point shadow views (the terrain selection covers them)
     std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
     std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
     std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)

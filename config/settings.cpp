@@ -57,9 +57,9 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
 }
 
 void describe(SettingsVisitor& v, DebugSettings& s) {
-    static constexpr std::array<const char*, 9> views{"final", "depth", "albedo", "normals", "lights", "cascades", "shadow_map", "shadow", "spot_atlas"};
+    static constexpr std::array<const char*, 10> views{"final", "depth", "albedo", "normals", "lights", "cascades", "shadow_map", "shadow", "spot_atlas", "point_shadows"};
     v.section("debug", "debug views and helpers");
-    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel, cascades = sun shadow cascade colours, shadow_map = the cascades' depth maps, shadow = the sun's visibility (white lit, black shadowed or facing away), spot_atlas = the spot lights' shadow atlas"},
+    v.choice({"view", "", "what the screen shows: final image, depth, G-buffer albedo or normals, lights = heat map of local lights evaluated per pixel, cascades = sun shadow cascade colours, shadow_map = the cascades' depth maps, shadow = the sun's visibility (white lit, black shadowed or facing away), spot_atlas = the spot lights' shadow atlas, point_shadows = the point lights' depth cubes (a row of six faces per light)"},
              s.view, views);
     v.field({"heat_max", "lights", "light count shown red in the lights view"}, s.heat_max, 1.0f, 65536.0f);
     v.field({"grid", "", "reference grid on the y = 0 plane"}, s.grid);
@@ -404,6 +404,13 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"spot_depth_bias_texels", "texels", "spot shadows: receiver moved towards the light, in texel footprints"}, s.spot_depth_bias_texels, 0.0f, 16.0f);
     v.field({"spot_normal_offset_texels", "texels", "spot shadows: receiver offset along its normal"}, s.spot_normal_offset_texels, 0.0f, 16.0f);
     v.field({"spot_min_screen_px", "px", "spot lights whose bounding sphere is smaller on screen cast no shadow"}, s.spot_min_screen_px, 0.0f, 10000.0f);
+    v.field({"point_enabled", "", "point lights (with `shadow on`) cast shadows from depth cubes, largest on screen first; filtered with the spot_* filter knobs"}, s.point_enabled);
+    v.field({"point_resolution", "texels", "point shadows: texels per cube face side"}, s.point_resolution, 32, 2048);
+    v.field({"point_max_lights", "", "shadowed point lights at once (cubes); the rest go unshadowed and are counted"}, s.point_max_lights, 1, 16);
+    v.field({"point_slope_bias", "", "point shadows: slope-scaled depth bias while drawing casters"}, s.point_slope_bias, 0.0f, 16.0f);
+    v.field({"point_depth_bias_texels", "texels", "point shadows: receiver moved towards the light, in texel footprints"}, s.point_depth_bias_texels, 0.0f, 16.0f);
+    v.field({"point_normal_offset_texels", "texels", "point shadows: receiver offset along its normal"}, s.point_normal_offset_texels, 0.0f, 16.0f);
+    v.field({"point_min_screen_px", "px", "point lights whose bounding sphere is smaller on screen cast no shadow"}, s.point_min_screen_px, 0.0f, 10000.0f);
 }
 
 void describe(SettingsVisitor& v, WeatherSettings& s) {

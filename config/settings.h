@@ -53,7 +53,7 @@ struct CaptureSettings {
     int crf = 18;                                  //!< H.264 constant rate factor of mp4 output, 0 (lossless)..51
 };
 
-enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow, SpotAtlas };
+enum class DebugView : int { Final, Depth, Albedo, Normals, Lights, Cascades, ShadowMap, Shadow, SpotAtlas, PointShadows };
 
 struct DebugSettings {
     DebugView view = DebugView::Final;
@@ -461,6 +461,17 @@ struct ShadowSettings {
     float spot_depth_bias_texels = 1.0f; //!< receiver moved towards the light by this many texel footprints, 0..16
     float spot_normal_offset_texels = 1.5f;   //!< receiver moved along its normal (times the sine of the light angle), texels, 0..16
     float spot_min_screen_px = 4.0f;     //!< px, lights whose bounding sphere is smaller on screen cast no shadow, 0..10000
+    // Shadowed point lights (renderer/shadows/point_shadows.h): the visible point lights with `shadow on`,
+    // largest on screen first (the spots' ranking), each get a depth cube of one cube-map array.
+    // Filtered with the spot knobs above (spot_filter, spot_taps, spot_filter_radius_texels,
+    // spot_light_size_m, spot_max_penumbra_texels). Off unless a scene asks: a cube is six views.
+    bool point_enabled = false;          //!< point lights cast shadows from depth cubes
+    int point_resolution = 256;          //!< texels per cube face side, 32..2048
+    int point_max_lights = 4;            //!< shadowed point lights at once (cubes), 1..16; the rest go unshadowed (counted)
+    float point_slope_bias = 2.0f;       //!< glPolygonOffset factor while drawing casters, 0..16
+    float point_depth_bias_texels = 1.0f;     //!< receiver moved towards the light by this many texel footprints, 0..16
+    float point_normal_offset_texels = 1.5f;  //!< receiver moved along its normal (times the sine of the light angle), texels, 0..16
+    float point_min_screen_px = 16.0f;   //!< px, lights whose bounding sphere is smaller on screen cast no shadow, 0..10000
 };
 
 //! Depth of field: a thin-lens circle of confusion from the focus distance, focal length and

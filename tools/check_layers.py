@@ -71,6 +71,7 @@ KNOWN = {
     ("renderer/shadows/spot_shadows.h", "renderer/lighting/lights.h"): "the light types into renderer/ (shadows pick spots)",
     ("renderer/shadows/spot_shadows.h", "terrain/cdlod.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/spot_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
+    ("renderer/shadows/point_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/sun_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/sun_shadows.h", "terrain/cdlod.h"): "the terrain as a ShadowCaster like grass",
     ("sky/atmosphere.h", "config/settings.h"): SETTINGS_STRUCTS,

@@ -87,11 +87,11 @@ void describeLight(SettingsVisitor& v, Light& l) {
     v.field({"color", "", "linear RGB"}, l.color, 0.0f, 1.0e3f);
     v.field({"intensity", "", "irradiance scale at 1 m"}, l.intensity, 0.0f, 1.0e7f);
     v.field({"ground", "m", "height above the terrain; -1 = the position's y"}, l.ground_m, -1.0f, 1.0e4f);
+    v.field({"shadow", "", "casts a shadow (spot: the spot shadow atlas, [shadows] spot_*; point: a depth cube, [shadows] point_*)"}, l.shadow);
     if (l.type != LightType::Spot) return;
     v.field({"direction", "", "spot axis, not all zero"}, l.direction, -1.0e6f, 1.0e6f);
     v.field({"cone_inner", "deg", "half-angle of full intensity, at most cone_outer"}, l.inner_deg, 0.0f, 180.0f);
     v.field({"cone_outer", "deg", "half-angle where the light ends"}, l.outer_deg, 0.0f, 180.0f);
-    v.field({"shadow", "", "casts a shadow (spot shadow atlas, [shadows] spot_*)"}, l.shadow);
 }
 
 void describeVolume(SettingsVisitor& v, LightVolume& g) {
@@ -144,7 +144,7 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     s.animation.seed = std::uint32_t(seed);
     NamedList lights(s.lights, &NamedLight::light, parseLightSpec, formatLightSpec, describeLight);
     v.list({"light", "", "a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
-                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on), ground H (m above the terrain)"},
+                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (default on; point lights with [shadows] point_enabled), ground H (m above the terrain)"},
            lights);
     NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
     v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "

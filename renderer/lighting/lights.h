@@ -44,7 +44,7 @@ struct Light {
     glm::vec3 direction{0, -1, 0};     // spot axis (world, normalised on use); point lights ignore it
     float inner_deg = 20.0f;           // deg, spot half-angle of full intensity, [0, outer_deg]
     float outer_deg = 30.0f;           // deg, spot half-angle where the light ends, [0, 180]
-    bool shadow = true;                // spot: may cast a shadow ([shadows] spot_*); point lights cast none
+    bool shadow = true;                // may cast a shadow: spot ([shadows] spot_*), point ([shadows] point_*)
     float ground_m = -1.0f;            // m: >= 0 puts the light this high above the terrain (y is then ignored); < 0: off
 
     bool operator==(const Light&) const = default;

@@ -237,7 +237,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         g[0] = glm::vec4(glm::vec3(l.position - view.position), std::max(l.radius_m, 0.0f));
         g[1] = glm::vec4(l.color * (l.intensity * radiance_scale), cone.scale);
         g[2] = glm::vec4(dir, cone.offset);
-        g[3] = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);  // unshadowed until setShadowSlots()
+        g[3] = glm::vec4(-1.0f, -1.0f, 0.0f, 0.0f);  // unshadowed until setShadowSlots() / setPointShadowSlots()
     }
     lights_buf_.upload(gpu.data(), n * sizeof(GpuLight), "lights");
 
@@ -398,18 +398,28 @@ void LocalLights::uploadHash() {
     hash_uploaded_ = true;
 }
 
-void LocalLights::setShadowSlots(const SpotShadows& shadows) {
+void LocalLights::writeShadowSlots(std::span<const SpotShadowPick> picks, const std::function<int(std::size_t)>& slot_of,
+                                   int component) {
     // order_scratch_ (GPU index -> light index) is ascending, so a light's GPU index is a search.
     const std::vector<std::uint32_t>& order = order_scratch_;
-    for (std::size_t k = 0; k < shadows.picks().size(); ++k) {
-        const std::uint32_t light = shadows.picks()[k].light;
+    for (std::size_t k = 0; k < picks.size(); ++k) {
+        const std::uint32_t light = picks[k].light;
         auto it = std::lower_bound(order.begin(), order.end(), light);
         if (it == order.end() || *it != light) continue;  // not on the GPU this frame: nothing to shadow
-        const glm::vec4 slot(float(shadows.slotOf(k)), 0.0f, 0.0f, 0.0f);
+        const float slot = float(slot_of(k));
         const auto index = std::size_t(it - order.begin());
-        glNamedBufferSubData(lights_buf_.buffer.id(), GLintptr(index * sizeof(GpuLight) + 3 * sizeof(glm::vec4)),
+        glNamedBufferSubData(lights_buf_.buffer.id(),
+                             GLintptr(index * sizeof(GpuLight) + 3 * sizeof(glm::vec4) + std::size_t(component) * sizeof(float)),
                              sizeof slot, &slot);
     }
+}
+
+void LocalLights::setShadowSlots(const SpotShadows& shadows) {
+    writeShadowSlots(shadows.picks(), [&](std::size_t k) { return shadows.slotOf(k); }, 0);
+}
+
+void LocalLights::setPointShadowSlots(const PointShadows& shadows) {
+    writeShadowSlots(shadows.picks(), [&](std::size_t k) { return shadows.slotOf(k); }, 1);
 }
 
 const char* LocalLights::define() const { return methodDefine(stats_.method); }
@@ -476,11 +486,12 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
     }
 
     struct Data {
-        TextureHandle depth, albedo, normal, hdr, heat, spot;
+        TextureHandle depth, albedo, normal, hdr, heat, spot, point;
     };
     const Data& d = graph.addPass<Data>("lights.shade",
         [&](PassBuilder& b, Data& data) {
             if (options.spot_shadows && options.spot_shadows->valid()) data.spot = b.read(options.spot_shadows->atlas);
+            if (options.point_shadows && options.point_shadows->valid()) data.point = b.read(options.point_shadows->cubes);
             data.depth = b.read(targets.depth);
             data.albedo = b.read(targets.albedo);
             data.normal = b.read(targets.normal);
@@ -500,6 +511,7 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             if (options.count) defines.push_back("COUNT_LIGHTS");
             if (data.heat.valid()) defines.push_back("LIGHT_HEAT");
             if (data.spot.valid()) defines.push_back("HAS_SPOT_SHADOWS");
+            if (data.point.valid()) defines.push_back("HAS_POINT_SHADOWS");
             glUseProgram(rc.shaders.get("renderer/lighting/shaders/light_shade.glsl", defines)->id());
             bindBuffers();
             if (data.spot.valid()) {
@@ -509,6 +521,14 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 glBindSampler(binding::kSpotShadowMap, spot.compare_sampler);
                 glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.spot));
                 glBindSampler(binding::kSpotShadowDepth, spot.depth_sampler);
+            }
+            if (data.point.valid()) {
+                const PointShadowInput& point = *options.point_shadows;
+                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, point.uniforms);
+                glBindTextureUnit(binding::kPointShadowMap, ctx.texture(data.point));
+                glBindSampler(binding::kPointShadowMap, point.compare_sampler);
+                glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.point));
+                glBindSampler(binding::kPointShadowDepth, point.depth_sampler);
             }
             if (options.count) {
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "lights.evaluations"));
@@ -536,6 +556,10 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             if (data.spot.valid()) {
                 glBindSampler(binding::kSpotShadowMap, 0);
                 glBindSampler(binding::kSpotShadowDepth, 0);
+            }
+            if (data.point.valid()) {
+                glBindSampler(binding::kPointShadowMap, 0);
+                glBindSampler(binding::kPointShadowDepth, 0);
             }
             if (options.count) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         });

@@ -16,7 +16,7 @@
 // GPU layouts (std430, renderer/lighting/shaders/lights.glsl):
 //   lights    (tiled, clustered: only the lights whose bounding sphere meets the view frustum,
 //             in light order; naive, hashed: all) 4 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
-//             scale; unit spot axis + cone offset (renderer/lighting/lights.h SpotCone; point: 0, 1); spot shadow tile (-1: none), 0, 0, 0.
+//             scale; unit spot axis + cone offset (renderer/lighting/lights.h SpotCone; point: 0, 1); spot shadow tile, point shadow cube (-1: none), 0, 0.
 //   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
 //   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
 //             tiles_x (tile.y + tiles_y slice)); count 0xFFFFFFFF = overflow, shade every light.
@@ -35,6 +35,7 @@
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "renderer/shadows/point_shadows.h"
 #include "renderer/shadows/spot_shadows.h"
 
 #include <glm/vec4.hpp>
@@ -90,6 +91,7 @@ struct LightPassOptions {
     bool heat = false;   // targets.light_heat for the lights debug view
     bool forward = false;  // lists also cover transparent depths (a forward pass follows)
     const SpotShadowInput* spot_shadows = nullptr;  // this frame's spot shadow atlas (see setShadowSlots())
+    const PointShadowInput* point_shadows = nullptr;  // this frame's point shadow cubes (see setPointShadowSlots())
 };
 
 class LocalLights {
@@ -112,6 +114,8 @@ public:
     // After prepare(): gives lights() [pick.light] the atlas tile slotOf(k) of each pick k (-1:
     // unshadowed); every other light stays unshadowed this frame.
     void setShadowSlots(const SpotShadows& shadows);
+    // The same for the shadowed point lights' cubes (renderer/shadows/point_shadows.h).
+    void setPointShadowSlots(const PointShadows& shadows);
     const LocalLightStats& stats() const { return stats_; }
     // Forward passes (transparent surfaces) drawn after this frame's lights.cull: compile with
     // the define (LIGHTS_NAIVE, _TILED, _CLUSTERED or _HASHED), include
@@ -131,6 +135,9 @@ private:
         void reserve(std::size_t bytes, std::string_view name);
     };
     void uploadHash();
+    // Writes slot_of(k) into component `component` of the shadow vec4 of each pick's light.
+    void writeShadowSlots(std::span<const SpotShadowPick> picks, const std::function<int(std::size_t)>& slot_of,
+                          int component);
     void readOverflow();
 
     std::vector<NamedLight> lights_;            // the entries the lights were collected from

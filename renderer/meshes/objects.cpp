@@ -545,6 +545,64 @@ void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, double radius_m,
+                             std::span<const glm::mat4> matrices, const std::function<void(std::size_t)>& before) {
+    // Per model, the instances whose bounding sphere meets the light's (upload order: model by model).
+    std::vector<std::uint32_t>& list = near_scratch_;
+    list.clear();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges(models_.size());  // first, count in list
+    std::uint32_t first = 0;
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const glm::vec4& sphere = spheres_[m];
+        ranges[m].first = std::uint32_t(list.size());
+        for (std::size_t j = 0; j < placed_[m].size(); ++j) {
+            const PlacedObject& p = placed_[m][j];
+            const double reach = radius_m + double(sphere.w) * double(p.scale) + glm::length(glm::dvec3(sphere)) * double(p.scale);
+            const glm::dvec3 d = p.position - centre;
+            if (glm::dot(d, d) < reach * reach) list.push_back(first + std::uint32_t(j));
+        }
+        ranges[m].second = std::uint32_t(list.size()) - ranges[m].first;
+        first += std::uint32_t(placed_[m].size());
+    }
+    if (list.empty()) return;
+    if (near_list_.size() < GLsizeiptr(list.size() * 4))
+        near_list_ = gl::Buffer::create(GLsizeiptr(list.size() * 4 * 2), nullptr, GL_DYNAMIC_STORAGE_BIT, "objects near-light casters");
+    glNamedBufferSubData(near_list_.id(), 0, GLsizeiptr(list.size() * 4), list.data());
+    const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
+    for (std::size_t i = 0; i < matrices.size(); ++i) {
+        before(i);
+        glBindVertexArray(vao_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, near_list_.id());
+        for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
+        // The full mesh (LOD 0), not the shadow LOD: a lamp a few metres from a wall sees the
+        // simplified mesh's bulges as a caster in front of the wall it lights.
+        for (std::size_t m = 0; m < models_.size(); ++m) {
+            const auto [start, count] = ranges[m];
+            if (count == 0) continue;
+            for (const ModelPrimitive& p : models_[m].lods[0].primitives) {
+                const ModelMaterial& mat = models_[m].materials[std::size_t(p.material)];
+                if (mat.alpha_mode == AlphaMode::Blend || p.index_count == 0) continue;  // glass casts no shadow (as drawList)
+                std::vector<std::string> defines{"SHADOW_PASS"};
+                if (mat.alpha_mode == AlphaMode::Mask) defines.push_back("ALPHA_MASK");
+                const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+                glUseProgram(program);
+                glProgramUniform1ui(program, 0, start);
+                glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrices[i][0][0]);
+                setMaterial(program, int(m), p.material, emissive_nits_, true);
+                glDrawElementsInstancedBaseVertex(
+                    GL_TRIANGLES, GLsizei(p.index_count), GL_UNSIGNED_INT,
+                    reinterpret_cast<const void*>(std::size_t(index_base_[m] + p.first_index) * 4), GLsizei(count),
+                    GLint(vertex_base_[m]));
+            }
+        }
+        glDisable(GL_CULL_FACE);
+        for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
+        glBindVertexArray(rc.empty_vao);
+    }
+}
+
 void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, BufferHandle lists,
                              SceneTargets& targets) {
     struct DrawData {

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,6 +83,13 @@ public:
     // The shadow-caster list depth-only through matrix (camera-relative world -> clip); adds its
     // triangles to objects.shadow_triangles when the cull pass counted.
     void drawShadow(const RenderContext& rc, const glm::mat4& matrix) const;
+    // The casters within radius_m of a point light at centre (world; picked on the CPU from the
+    // placed instances, not the cull pass's lists; their full LOD 0 meshes) into its views:
+    // before(i) binds view i's target, then they are drawn with matrices[i]. For the point-light
+    // cubes (renderer/shadows/point_shadows.h), which would otherwise draw every caster of the
+    // shadow distance six times a light.
+    void drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, double radius_m,
+                        std::span<const glm::mat4> matrices, const std::function<void(std::size_t)>& before);
     // Renders every model's impostor atlas (once; the cull pass's gbuffer pass calls it when
     // impostors can be drawn). Public for the tests.
     void bakeImpostors(const RenderContext& rc);
@@ -148,6 +156,8 @@ private:
     bool baked_ = false;
     std::vector<Blend> blend_;
     gl::Buffer forward_list_;  // this frame's sorted instance indices
+    gl::Buffer near_list_;     // drawShadowNear's instance indices, per model
+    std::vector<std::uint32_t> near_scratch_;
     bool sort_transparent_ = true;
     std::size_t transparent_drawn_ = 0, transparent_dropped_ = 0;
     GLuint shadow_counter_ = 0;        // this frame's objects.shadow_triangles buffer, 0: not counting

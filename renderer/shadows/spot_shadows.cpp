@@ -30,6 +30,12 @@ struct SpotShadowUniforms {
 std::vector<SpotShadowPick> pickShadowedSpots(std::span<const Light> lights, const ViewParams& view,
                                               const ViewMatrices& m, int max_lights, float min_screen_px,
                                               std::uint64_t& candidates) {
+    return pickShadowedLights(lights, LightType::Spot, view, m, max_lights, min_screen_px, candidates);
+}
+
+std::vector<SpotShadowPick> pickShadowedLights(std::span<const Light> lights, LightType type, const ViewParams& view,
+                                               const ViewMatrices& m, int max_lights, float min_screen_px,
+                                               std::uint64_t& candidates) {
     std::vector<SpotShadowPick> picks;
     candidates = 0;
     const double ty = std::tan(glm::radians(view.fov_deg) * 0.5);
@@ -38,9 +44,8 @@ std::vector<SpotShadowPick> pickShadowedSpots(std::span<const Light> lights, con
     const double px_per_tan = 0.5 * double(view.height) / ty;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const Light& l = lights[i];
-        if (l.type != LightType::Spot || !l.shadow || l.radius_m <= 0.0f || l.intensity <= 0.0f ||
-            l.outer_deg >= kMaxShadowedSpotDeg || glm::length(l.direction) <= 0.0f)
-            continue;
+        if (l.type != type || !l.shadow || l.radius_m <= 0.0f || l.intensity <= 0.0f) continue;
+        if (type == LightType::Spot && (l.outer_deg >= kMaxShadowedSpotDeg || glm::length(l.direction) <= 0.0f)) continue;
         const Sphere sphere = boundingSphere(l);
         const glm::dvec3 rel = sphere.center - view.position;
         const glm::dvec3 c{glm::dot(rel, m.right), glm::dot(rel, m.up), glm::dot(rel, m.forward)};

@@ -47,8 +47,14 @@ struct SpotShadowPick {
     double screen_px = 0.0;   // priority: bounding-sphere radius on screen
 };
 
-// The spot lights that get a shadow, highest priority first, at most max_lights; `candidates`
-// receives how many qualified (so candidates - result.size() went unshadowed for want of tiles).
+// The lights of `type` with `shadow on` that get a shadow, highest priority first, at most
+// max_lights; `candidates` receives how many qualified (so candidates - result.size() went
+// unshadowed for want of tiles). The spot atlas and the point-light cubes
+// (renderer/shadows/point_shadows.h) share this ranking; spots also need a cone under 85 deg.
+std::vector<SpotShadowPick> pickShadowedLights(std::span<const Light> lights, LightType type, const ViewParams& view,
+                                               const ViewMatrices& m, int max_lights, float min_screen_px,
+                                               std::uint64_t& candidates);
+// pickShadowedLights for the spot lights.
 std::vector<SpotShadowPick> pickShadowedSpots(std::span<const Light> lights, const ViewParams& view,
                                               const ViewMatrices& m, int max_lights, float min_screen_px,
                                               std::uint64_t& candidates);

@@ -209,7 +209,8 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
 }
 
 std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms() {
-    return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}}};
+    return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}},
+            {"renderer/shadows/shaders/point_shadow_view.glsl", {}}};
 }
 
 }  // namespace vista

@@ -79,7 +79,7 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
     // Every memory counter adds up to the total.
     double parts = counter(base.report, "gpu.transient_bytes");
     for (const char* c : {"terrain.memory_bytes", "grass.memory_bytes", "sky.memory_bytes", "clouds.memory_bytes",
-                          "lights.memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "water.memory_bytes",
+                          "lights.memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "shadows.point_memory_bytes", "water.memory_bytes",
                           "weather.memory_bytes", "postfx.memory_bytes", "objects.memory_bytes"})
         parts += std::max(counter(base.report, c), 0.0);
     CHECK(parts <= base.memory);

@@ -31,6 +31,9 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kSpotShadowUniforms == BINDING_SPOT_SHADOW_UNIFORMS);
     CHECK(binding::kSpotShadowMap == BINDING_SPOT_SHADOW_MAP);
     CHECK(binding::kSpotShadowDepth == BINDING_SPOT_SHADOW_DEPTH);
+    CHECK(binding::kPointShadowUniforms == BINDING_POINT_SHADOW_UNIFORMS);
+    CHECK(binding::kPointShadowMap == BINDING_POINT_SHADOW_MAP);
+    CHECK(binding::kPointShadowDepth == BINDING_POINT_SHADOW_DEPTH);
     CHECK(binding::kBlueNoise == BINDING_BLUE_NOISE);
     CHECK(binding::kGrassBlades == BINDING_GRASS_BLADES);
     CHECK(binding::kGrassDraws == BINDING_GRASS_DRAWS);

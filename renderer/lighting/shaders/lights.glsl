@@ -4,19 +4,23 @@
 // surfaces): any of them finds a position's candidate lights with lightRange() and shades them
 // with shadeLocalLight(). Formulas and layouts: renderer/lighting/lights.h, renderer/lighting/local_lights.h.
 // Needs common.glsl, gbuffer.glsl and brdf.glsl first. With HAS_SPOT_SHADOWS (fragment stages)
-// shadowed spot lights read their tile of the spot shadow atlas. (The filter taps are included
+// shadowed spot lights read their tile of the spot shadow atlas; with HAS_POINT_SHADOWS shadowed
+// point lights read their depth cube. (The filter taps are included
 // outside the #ifdef: the shader library expands each file once, before the GLSL preprocessor,
 // so a file first reached inside an #ifdef would be missing for a later includer.)
 #include "../../shadows/shaders/shadow_filter.glsl"
 #ifdef HAS_SPOT_SHADOWS
 #include "../../shadows/shaders/spot_shadows.glsl"
 #endif
+#ifdef HAS_POINT_SHADOWS
+#include "../../shadows/shaders/point_shadows.glsl"
+#endif
 
 struct LocalLight {
     vec4 position_radius;  // camera-relative position (m), radius (m)
     vec4 color_scale;      // colour * intensity, spot cone scale (0 for point lights)
     vec4 direction_offset; // unit spot axis, spot cone offset (1 for point lights)
-    vec4 shadow;           // x: tile of the spot shadow atlas (-1: unshadowed), yzw unused
+    vec4 shadow;           // x: tile of the spot shadow atlas, y: point shadow cube (-1: unshadowed), zw unused
 };
 layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { LocalLight u_lights[]; };
 // Per tile or cluster (tiled, clustered): (offset, count) into u_light_indices; count
@@ -138,6 +142,10 @@ vec3 shadeLocalLight(LocalLight light, Surface s, vec3 position, vec3 v, out boo
 #ifdef HAS_SPOT_SHADOWS
     int slot = int(light.shadow.x);
     if (slot >= 0) attenuation *= spotShadow(slot, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy) * 6.28318531);
+#endif
+#ifdef HAS_POINT_SHADOWS
+    int cube = int(light.shadow.y);
+    if (cube >= 0) attenuation *= pointShadow(cube, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy) * 6.28318531);
 #endif
     return evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * light.color_scale.rgb * (attenuation * ndotl);
 }
