@@ -251,8 +251,10 @@ void main() {
     o_color = vec4(c * (0.5 + 0.5 * max(dot(n, u_sun_dir.xyz), 0.0)), px);
 #elif TERRAIN_VIEW == 5
     // Material layers (alpha = the layer index, for tests and tools reading the HDR target).
+    const vec3 colors[8] = vec3[](vec3(0.9, 0.8, 0.4), vec3(0.1, 0.7, 0.1), vec3(0.45), vec3(1.0), vec3(0.45, 0.25, 0.1),
+                                  vec3(1.0, 0.1, 0.8), vec3(0.1, 0.8, 1.0), vec3(1.0, 0.45, 0.0));  // sand grass rock snow dirt, added
     int id = materialId(n);
-    o_color = vec4(lodColor(float(id)) * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), float(id));
+    o_color = vec4(colors[id % 8] * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), float(id));
 #else
 #if TERRAIN_VIEW == 1
     vec3 c = lodColor(v_lod.x);
