@@ -516,7 +516,9 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
             glProgramUniform1f(program, 17, wetness_);
             glProgramUniform4fv(program, 32, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
             glProgramUniform1fv(program, 40, GLsizei(layer_scale.size()), layer_scale.data());
-            glProgramUniform4iv(program, 48, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
+            // Only TERRAIN_SPLAT programs declare it (a location no uniform holds is a GL error).
+            if (splat_images_ > 0 && !s.splat_map.empty())
+                glProgramUniform4iv(program, 48, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
             if (tier == 0 && s.pom.enabled && pass == 1) {
                 // The relief is gone where the near tier ends (the other tiers have no POM variant).
                 const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
