@@ -107,8 +107,12 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
     TerrainSettings wanted = s.terrain;
     wanted.heightmap = resolveInput(s.terrain.heightmap).string();
     wanted.dem = resolveInput(s.terrain.dem).string();
+    wanted = resolveMaterialPaths(std::move(wanted), resolveInput);
     bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
-                                                           terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid;
+                                                           terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid &&
+                                                           terrain_source_.materials == wanted.materials &&
+                                                           terrain_source_.splat_map == wanted.splat_map &&
+                                                           terrain_source_.splat_layers == wanted.splat_layers;
     if (!same) {
         objects_.reset();  // placed on the old terrain
         terrain_.reset();

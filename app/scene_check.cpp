@@ -13,6 +13,7 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
         TerrainSettings wanted = s.terrain;
         wanted.heightmap = resolveInput(s.terrain.heightmap).string();
         wanted.dem = resolveInput(s.terrain.dem).string();
+        wanted = resolveMaterialPaths(std::move(wanted), resolveInput);
         TerrainMapping mapping;
         Heightmap checked = Terrain::loadChecked(wanted, errors, &mapping);  // the same function Terrain::load runs
         if (terrain && !checked.samples.empty()) *terrain = {std::move(checked), mapping};

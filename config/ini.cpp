@@ -351,6 +351,7 @@ const Section* find(const std::vector<Section>& sections, std::string_view name)
 std::vector<std::string> sectionNames(const std::vector<Section>& sections) {
     std::vector<std::string> out;
     for (const Section& s : sections) out.push_back(s.name);
+    out.push_back("terrain.material.NAME");  // the named family (addNamedSection)
     return out;
 }
 
@@ -475,6 +476,8 @@ private:
             return;
         }
         section_ = std::string(trim(line.substr(1, line.size() - 2)));
+        // A section of a named family ([terrain.material.NAME]) makes its entry on first sight.
+        if (!find(sections_, *section_) && addNamedSection(settings_, *section_)) sections_ = collectNames(settings_);
         if (!find(sections_, *section_)) {
             const std::vector<std::string> names = sectionNames(sections_);
             error(line_, unknown("unknown section [" + *section_ + "]", didYouMean(*section_, names), names));
@@ -523,7 +526,7 @@ private:
     std::string_view text_;  // not read yet
     const std::string& file_;
     Settings& settings_;
-    const std::vector<Section> sections_;
+    std::vector<Section> sections_;  // grows when a named section ([terrain.material.NAME]) appears
     InputErrors errors_;
     int line_ = 0;
     int pending_ = 0;  // line handed to inih as key = value that has not reached onKey yet
@@ -557,7 +560,21 @@ InputErrors applyOverride(std::string_view assignment, Settings& s) {
     if (eq == assignment.npos || dot == name.npos || dot == 0 || dot + 1 == name.size())
         return fail("cannot parse \"" + std::string(assignment) +
                     "\"; accepted: --set section.key=value, e.g. --set window.width=1920");
-    const std::vector<Section> sections = collectNames(s);
+    std::vector<Section> sections = collectNames(s);
+    // A key of a named section that is not there yet ([terrain.material.NAME]) makes the entry;
+    // it is taken out again when the key is refused.
+    bool added = false;
+    if (const auto last = name.rfind('.'); !find(sections, std::string_view(name).substr(0, last))) {
+        const std::size_t before = s.terrain.materials.size();
+        if (addNamedSection(s, std::string_view(name).substr(0, last))) {
+            added = s.terrain.materials.size() > before;
+            sections = collectNames(s);
+        }
+    }
+    const auto undo = [&](InputErrors errors) {
+        if (added && !errors.empty()) s.terrain.materials.pop_back();
+        return errors;
+    };
     // The last dot splits section and key, except in a list key: lights.light.lantern is
     // [lights] light.lantern.
     std::string section = name.substr(0, dot), key = name.substr(dot + 1);
@@ -576,6 +593,7 @@ InputErrors applyOverride(std::string_view assignment, Settings& s) {
     const Section* found = find(sections, section);
     if (!found) return fail(unknown("unknown section [" + section + "]", didYouMean(name, all), sectionNames(sections)));
     if (!hasKey(*found, key)) {
+        if (added) s.terrain.materials.pop_back();
         // The section is known: suggest only its own keys (a key of another section with a
         // similar name would be refused there too, or set something else).
         std::vector<std::string> own;
@@ -585,7 +603,7 @@ InputErrors applyOverride(std::string_view assignment, Settings& s) {
     }
     Applier apply(section, key, trim(assignment.substr(eq + 1)));
     describe(apply, s);
-    return apply.error.empty() ? InputErrors{} : fail(apply.error);
+    return undo(apply.error.empty() ? InputErrors{} : fail(apply.error));
 }
 
 std::string saveIniString(Settings& s) {
@@ -596,6 +614,7 @@ std::string saveIniString(Settings& s) {
 
 std::string sceneFileReference() {
     Settings defaults;
+    addNamedSection(defaults, "terrain.material.NAME");  // documents the family's keys (none by default)
     Reference reference;
     describe(reference, defaults);
     return "# Scene file reference\n\n"

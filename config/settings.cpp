@@ -67,7 +67,7 @@ void describe(SettingsVisitor& v, DebugSettings& s) {
 }
 
 void describe(SettingsVisitor& v, TerrainSettings& s) {
-    static constexpr std::array<const char*, 5> views{"shaded", "lod", "morph", "normals", "error"};
+    static constexpr std::array<const char*, 6> views{"shaded", "lod", "morph", "normals", "error", "material"};
     static constexpr std::array<const char*, 2> metrics{"error", "distance"};
     v.section("terrain", "heightmap terrain with CDLOD level of detail");
     v.field({"enabled", "", "draw the terrain"}, s.enabled);
@@ -96,7 +96,9 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"base_range_m", "m", "LOD 0 range (raised to what node size and error need)"}, s.base_range_m, 1.0f, 1.0e6f);
     v.field({"range_ratio", "x", "range growth per LOD level"}, s.range_ratio, 1.5f, 4.0f);
     v.field({"morph_start", "", "fraction of each level's span before morphing starts"}, s.morph_start, 0.0f, 0.95f);
-    v.choice({"view", "", "shaded, or colour by LOD level, morph factor, normal or screen error (px)"}, s.view, views);
+    v.choice({"view", "", "shaded, or colour by LOD level, morph factor, normal, screen error (px) or material layer (the "
+                          "largest weight; alpha = layer index)"},
+             s.view, views);
     v.field({"wireframe", "", "overlay the node grids' edges"}, s.wireframe);
     v.field({"bounds", "", "draw the selected nodes' bounding boxes"}, s.bounds);
     v.field({"detail_distance_m", "m", "detail normals and triplanar rock fade out by this distance (near material tier)"},
@@ -117,6 +119,12 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"material_anisotropy", "x", "anisotropic filtering of the material textures (albedo, detail normals, heights); "
                                          "1: trilinear only"},
             s.material_anisotropy, 1, 16);
+    v.field({"splat_map", "", "RGBA image(s) of material weights over the heightmap, one texel per height sample: replace "
+                              "the height/slope rules (one file, or two separated by a space: 8 channels; docs/terrain-materials.md)"},
+            s.splat_map);
+    v.field({"splat_layers", "", "the layer each splat channel weighs, by name (sand grass rock snow dirt or a "
+                                 "[terrain.material.NAME]), separated by spaces; empty: the user materials in file order"},
+            s.splat_layers);
     TerrainPomSettings& p = s.pom;
     v.section("terrain.pom", "parallax occlusion mapping of the near terrain's material relief (docs/terrain-detail.md)");
     v.field({"enabled", "", "march the material height field in the near material tier (off: no program variant)"}, p.enabled);
@@ -138,6 +146,17 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"edge_px", "px", "target length of a tessellated edge on screen"}, t.edge_px, 1.0f, 64.0f);
     v.field({"max_factor", "", "largest subdivision of an edge"}, t.max_factor, 1.0f, 64.0f);
     v.field({"depth_m", "m", "depth of relief height 0 below the drawn surface"}, t.depth_m, 0.001f, 1.0f);
+    for (TerrainMaterialSettings& m : s.materials) {
+        v.section(m.section.c_str(), "a user material: images of one square power-of-two size; NAME sand, grass, rock, "
+                                     "snow or dirt replaces that layer, any other adds one (docs/terrain-materials.md)");
+        v.field({"albedo", "", "sRGB colour image, RGB or RGBA (alpha ignored); required"}, m.albedo);
+        v.field({"normal", "", "tangent-space normal map, RGB (0.5 + 0.5 n, green toward the bottom row: DirectX style); empty: flat"}, m.normal);
+        v.field({"height", "", "relief height for POM and tessellation, one channel (0 lowest .. 1 highest); empty: flat"},
+                m.height);
+        v.field({"roughness", "", "roughness image, one channel; empty: roughness_value"}, m.roughness);
+        v.field({"roughness_value", "", "roughness where no roughness image is given"}, m.roughness_value, 0.0f, 1.0f);
+        v.field({"tiling_m", "m", "size of one repeat of the images on the ground"}, m.tiling_m, 0.05f, 1000.0f);
+    }
 }
 
 void describe(SettingsVisitor& v, GrassSettings& s) {
@@ -516,6 +535,18 @@ bool isValidListName(std::string_view name) {
     return !name.empty() && std::ranges::all_of(name, [](char c) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     });
+}
+
+bool addNamedSection(Settings& s, std::string_view section) {
+    constexpr std::string_view kMaterial = "terrain.material.";
+    if (!section.starts_with(kMaterial) || !isValidListName(section.substr(kMaterial.size()))) return false;
+    for (const TerrainMaterialSettings& m : s.terrain.materials)
+        if (m.section == section) return true;
+    TerrainMaterialSettings m;
+    m.name = std::string(section.substr(kMaterial.size()));
+    m.section = std::string(section);
+    s.terrain.materials.push_back(std::move(m));
+    return true;
 }
 
 void describe(SettingsVisitor& v, Settings& s) {

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vista {
@@ -62,7 +63,7 @@ struct DebugSettings {
     float heat_max = 32.0f;     //!< lights per pixel shown red in the lights view, 1..65536
 };
 
-enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error };
+enum class TerrainView : int { Shaded, Lod, Morph, Normals, Error, Material };
 enum class LodMetric : int { Error, Distance };
 enum class DemNodata : int { Fill, Refuse };  // what a DEM's nodata cells get (terrain/dem.h)
 
@@ -89,6 +90,21 @@ struct TerrainTessSettings {
     float edge_px = 6.0f;             //!< px, target length of a tessellated edge on screen, 1..64
     float max_factor = 16.0f;         //!< largest subdivision of an edge, 1..64
     float depth_m = 0.1f;             //!< m, depth of relief height 0 below the drawn surface, 0.001..1
+};
+
+//! A user material ([terrain.material.NAME], terrain/user_materials.h): image files read with
+//! OpenImageIO, all of one square power-of-two size. NAME sand, grass, rock, snow or dirt replaces
+//! that generated layer; any other NAME adds a layer that only a splat map places.
+struct TerrainMaterialSettings {
+    std::string name;                 //!< NAME (letters, digits, _)
+    std::string section;              //!< "terrain.material.NAME" (visitors take section names as C strings)
+    std::string albedo;               //!< sRGB colour image, RGB or RGBA (alpha ignored); required
+    std::string normal;               //!< tangent-space normal map, RGB (0.5 + 0.5 n, green toward the bottom row: DirectX style); empty: flat
+    std::string height;               //!< relief height, one channel (0 lowest .. 1 highest); empty: flat
+    std::string roughness;            //!< one channel, 0..1; empty: roughness_value everywhere
+    float roughness_value = 0.85f;    //!< roughness where no roughness image is given, 0..1
+    float tiling_m = 4.0f;            //!< m covered by one repeat of the images, 0.05..1000
+    bool operator==(const TerrainMaterialSettings&) const = default;
 };
 
 struct TerrainSettings {
@@ -124,9 +140,13 @@ struct TerrainSettings {
     float band_jitter = 0.02f;        //!< heightmap units of noise on band edges
     float rock_slope = 0.75f;         //!< normal.y below which slopes turn to rock
     int material_anisotropy = 1;      //!< anisotropic filtering of the material textures (1: trilinear only), 1..16
+    std::string splat_map;            //!< one or two RGBA images of layer weights over the heightmap (its size); empty: height/slope rules
+    std::string splat_layers;         //!< layer names, one per splat channel (empty: the user materials in file order)
     TerrainPomSettings pom;           //!< [terrain.pom]
     TerrainTessSettings tessellation; //!< [terrain.tessellation]
+    std::vector<TerrainMaterialSettings> materials;  //!< [terrain.material.NAME] sections, in file order
 };
+
 
 //! Grass (terrain/grass/grass.h): instanced curved blades placed per world cell around the camera,
 //! culled on the GPU, bent by wind, written to the G-buffer after the terrain. Needs [terrain].
@@ -582,5 +602,10 @@ struct Settings {
 
 // Lists every section and field of s to v, in file order.
 void describe(SettingsVisitor& v, Settings& s);
+
+// Adds the named section `section` (a family of sections with a NAME: terrain.material.NAME) to s
+// when it is one and not there yet. True when s now has it (the ini loader and --set then set its
+// keys); false for a name no family takes.
+bool addNamedSection(Settings& s, std::string_view section);
 
 }  // namespace vista

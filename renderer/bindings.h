@@ -12,6 +12,7 @@ constexpr int kTex1 = 1;
 constexpr int kTex2 = 2;
 constexpr int kTex3 = 3;
 constexpr int kTex4 = 4;
+constexpr int kTex5 = 5;
 constexpr int kTerrainNodes = 1;   // shader storage: selected terrain node instances
 constexpr int kLightGrid = 1;      // uniform block: LightGrid (renderer/lighting/shaders/lights.glsl)
 constexpr int kLights = 2;         // shader storage: local lights

@@ -4,6 +4,7 @@
 #include "renderer/bindings.h"
 #include "terrain/dem.h"
 #include "terrain/materials.h"
+#include "terrain/user_materials.h"
 
 #include <algorithm>
 #include <chrono>
@@ -76,6 +77,10 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
     // distance_m, which draw() keeps within detail_distance_m (where the near tier ends).
     if (s.pom.enabled && s.view == TerrainView::Shaded && tier == 0) defines.push_back("TERRAIN_POM");
     if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
+    defines.push_back("MATERIAL_LAYERS=" + std::to_string(kMaxMaterialLayers));
+    // Splat maps place the layers instead of the height/slope rules (user_materials.h).
+    if (const std::size_t images = splatFiles(s).size(); images > 0)
+        defines.push_back("TERRAIN_SPLAT=" + std::to_string(std::min<std::size_t>(images, kMaxSplatImages)));
     return defines;
 }
 
@@ -105,9 +110,22 @@ std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() 
         s.pom.enabled = true;
         programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
         s.pom.enabled = false;
-        for (TerrainView view : {TerrainView::Lod, TerrainView::Morph, TerrainView::Normals, TerrainView::Error}) {
+        for (TerrainView view : {TerrainView::Lod, TerrainView::Morph, TerrainView::Normals, TerrainView::Error, TerrainView::Material}) {
             s.view = view;
             programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
+        }
+    }
+    {  // splat maps (one and two images): every tier, POM, the material view
+        TerrainSettings s;
+        for (const char* splat : {"a.png", "a.png b.png"}) {
+            s.splat_map = splat;
+            for (int tier = 0; tier < kMaterialTiers; ++tier) programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, tier)});
+            s.pom.enabled = true;
+            programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
+            s.pom.enabled = false;
+            s.view = TerrainView::Material;
+            programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
+            s.view = TerrainView::Shaded;
         }
     }
     programs.push_back({"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}});
@@ -130,18 +148,26 @@ bool checkGrid(int grid, InputErrors& errors) {
     return false;
 }
 
+// The user's materials and splat maps (Terrain::create reads them again for the GPU): `vista
+// check` runs the same checks.
+bool checkMaterials(const TerrainSettings& s, const Heightmap& map, InputErrors& errors) {
+    if (!usesUserMaterials(s)) return true;
+    return loadMaterialSet(s, map.width, map.height, errors).images.layers > 0;
+}
+
 }  // namespace
 
 Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors, TerrainMapping* mapping) {
     if (!checkGrid(s.grid, errors)) return {};
     if (!s.dem.empty()) {
         Dem dem = loadDem(s.dem, s.dem_nodata, s.dem_vertical_scale, errors);
-        if (dem.map.samples.empty()) return {};
+        if (dem.map.samples.empty() || !checkMaterials(s, dem.map, errors)) return {};
         if (mapping) *mapping = demMapping(dem.info, dem.map.width, dem.map.height);
         return std::move(dem.map);
     }
     Heightmap map = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
     if (map.samples.empty() || !checkHeightRange(map, s.height_scale_m, s.height_offset_m, s.heightmap, errors)) return {};
+    if (!checkMaterials(s, map, errors)) return {};
     if (mapping) *mapping = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     return map;
 }
@@ -225,7 +251,27 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMappi
         return nullptr;
     }
 
-    MaterialImages materials = generateMaterialImages();
+    MaterialSet set = loadMaterialSet(s, map.width, map.height, errors);
+    if (set.images.layers == 0) return nullptr;
+    const MaterialImages& materials = set.images;
+    t->layer_count_ = materials.layers;
+    std::copy(set.repeat_m.begin(), set.repeat_m.end(), t->layer_repeat_m_.begin());
+    if (set.splat_images > 0) {
+        // Weights between height samples are bilinear, as the heights are; clamped at the map's edge.
+        GLuint id = 0;
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        glTextureStorage3D(id, 1, GL_RGBA8, set.splat_width, set.splat_height, set.splat_images);
+        glTextureSubImage3D(id, 0, 0, 0, 0, set.splat_width, set.splat_height, set.splat_images, GL_RGBA, GL_UNSIGNED_BYTE,
+                            set.splat.data());
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glObjectLabel(GL_TEXTURE, id, -1, "terrain splat weights");
+        t->splat_ = gl::Texture::adopt(id, set.splat_width, set.splat_height, GL_RGBA8);
+        t->splat_images_ = set.splat_images;
+        for (std::size_t c = 0; c < set.splat_layers.size(); ++c) t->splat_layers_[c] = set.splat_layers[c];
+    }
     // The far tier's colours: each layer's mean albedo, decoded from sRGB first (what the
     // texture's last mip level holds), and mean roughness.
     const std::size_t layer_texels = std::size_t(materials.size) * std::size_t(materials.size);
@@ -266,7 +312,8 @@ bool Terrain::matches(const TerrainSettings& s) const {
     return s.heightmap == source_.heightmap && s.raw_width == source_.raw_width && s.raw_height == source_.raw_height &&
            s.size_m == source_.size_m && s.height_scale_m == source_.height_scale_m &&
            s.height_offset_m == source_.height_offset_m && s.grid == source_.grid && s.dem == source_.dem &&
-           s.dem_nodata == source_.dem_nodata && s.dem_vertical_scale == source_.dem_vertical_scale;
+           s.dem_nodata == source_.dem_nodata && s.dem_vertical_scale == source_.dem_vertical_scale &&
+           s.materials == source_.materials && s.splat_map == source_.splat_map && s.splat_layers == source_.splat_layers;
 }
 
 double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z) {
@@ -413,9 +460,11 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
 void Terrain::setTessState(const TerrainSettings& s, GLuint program) {
     const TerrainTessSettings& t = s.tessellation;
     glm::dvec3 rel = camera_ - s.origin;
-    const double period = double(s.texture_scale_m);  // the relief repeats every texture_scale_m
+    // The relief (the rock layer's) repeats every texture_scale_m, or a user rock's tiling_m.
+    const float rock_repeat = layer_repeat_m_[std::size_t(MaterialLayer::Rock)];
+    const double period = double(rock_repeat > 0.0f ? rock_repeat : s.texture_scale_m);
     glProgramUniform4f(program, 28, t.edge_px, float(error_scale_), t.range_m, t.max_factor);
-    glProgramUniform4f(program, 29, t.depth_m, 1.0f / s.texture_scale_m, float(std::fmod(rel.x, period)),
+    glProgramUniform4f(program, 29, t.depth_m, float(1.0 / period), float(std::fmod(rel.x, period)),
                        float(std::fmod(rel.z, period)));
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glBindTextureUnit(binding::kTex3, detail_.id());
@@ -436,7 +485,14 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
+    if (splat_images_ > 0) glBindTextureUnit(binding::kTex5, splat_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
+    // Texture coordinates per metre of each layer: a user material's tiling_m, else texture_scale_m
+    // (the generated rock at half that scale: its strata want the larger repeat).
+    std::array<float, kMaxMaterialLayers> layer_scale{};
+    for (std::size_t l = 0; l < layer_scale.size(); ++l)
+        layer_scale[l] = layer_repeat_m_[l] > 0.0f ? 1.0f / layer_repeat_m_[l]
+                                                   : (l == std::size_t(MaterialLayer::Rock) ? 0.5f : 1.0f) / s.texture_scale_m;
     std::size_t first = 0;
     for (int tier = 0; tier < kMaterialTiers; ++tier) {
         const std::size_t count = tier_counts_[std::size_t(tier)];
@@ -458,7 +514,11 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
             glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
             glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
             glProgramUniform1f(program, 17, wetness_);
-            glProgramUniform4fv(program, 20, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
+            glProgramUniform4fv(program, 32, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
+            glProgramUniform1fv(program, 40, GLsizei(layer_scale.size()), layer_scale.data());
+            // Only TERRAIN_SPLAT programs declare it (a location no uniform holds is a GL error).
+            if (splat_images_ > 0 && !s.splat_map.empty())
+                glProgramUniform4iv(program, 48, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
             if (tier == 0 && s.pom.enabled && pass == 1) {
                 // The relief is gone where the near tier ends (the other tiers have no POM variant).
                 const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
@@ -578,7 +638,7 @@ std::size_t Terrain::memoryBytes() const {
 
 std::size_t Terrain::gpuMemoryBytes() const {
     std::size_t bytes = 0;
-    for (const gl::Texture* t : {&height_, &normals_, &albedo_, &detail_, &bias_texture_}) bytes += t->bytes();
+    for (const gl::Texture* t : {&height_, &normals_, &albedo_, &detail_, &bias_texture_, &splat_}) bytes += t->bytes();
     for (const gl::Buffer* b : {&grid_indices_, &instance_buffer_, &bounds_buffer_, &shadow_instances_})
         bytes += std::size_t(b->size());
     return bytes;

@@ -11,6 +11,7 @@
 #include "renderer/scene_targets.h"
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
+#include "terrain/user_materials.h"
 
 #include <array>
 #include <functional>
@@ -164,7 +165,11 @@ private:
     std::vector<std::uint32_t> order_;          // scratch for sortInstances()
     std::vector<TerrainInstance> sorted_;       // scratch for sortInstances()
     std::array<std::size_t, kMaterialTiers> tier_counts_{};  // instances_ per tier, in order
-    std::array<glm::vec4, 5> layer_mean_{};     // each material layer's mean linear albedo, roughness
+    std::array<glm::vec4, kMaxMaterialLayers> layer_mean_{};  // each material layer's mean linear albedo, roughness
+    std::array<float, kMaxMaterialLayers> layer_repeat_m_{};    // m per repeat of a user layer (0: generated)
+    std::array<GLint, 4 * kMaxSplatImages> splat_layers_{-1, -1, -1, -1, -1, -1, -1, -1};  // layer per splat channel
+    int splat_images_ = 0;                      // splat map images (0: height/slope rules)
+    int layer_count_ = 0;                       // material array layers
     TerrainCounters counters_;
     glm::dvec3 camera_{0.0};
     glm::vec4 far_grass_{0.0f};
@@ -178,7 +183,7 @@ private:
     float anisotropy_ = 1.0f;      // what the material textures are set to
 
     TerrainTiles tiles_;
-    gl::Texture height_, normals_, albedo_, detail_, bias_texture_;
+    gl::Texture height_, normals_, albedo_, detail_, bias_texture_, splat_;
     gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_, shadow_instances_, shadow_lists_;
     GLsizeiptr shadow_slot_bytes_ = 0;
     gl::VertexArray vao_;

@@ -87,6 +87,7 @@ KNOWN = {
     ("terrain/water/water.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("terrain/water/waves.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("terrain/terrain.h", "config/settings.h"): SETTINGS_STRUCTS,
+    ("terrain/user_materials.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("postfx/bloom.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("postfx/chain.h", "config/settings.h"): SETTINGS_STRUCTS,
     ("postfx/dof.h", "config/settings.h"): SETTINGS_STRUCTS,

@@ -137,7 +137,17 @@ layout(location = 7) uniform vec2 u_far_fade;    // m: where textures start to g
 layout(location = 14) uniform vec4 u_grass_far;   // grass blades' mean albedo (linear), strength (0: no grass)
 layout(location = 15) uniform vec2 u_grass_fade;  // distance (m) where the far grass colour starts, and is full
 layout(location = 17) uniform float u_wetness;    // rain ([weather]): 0 dry .. 1 soaked
-layout(location = 20) uniform vec4 u_layer_mean[5];  // each layer's mean linear albedo, roughness (far tier)
+#ifndef MATERIAL_LAYERS
+#error MATERIAL_LAYERS comes from terrain.cpp terrainDefines() (kMaxMaterialLayers)
+#endif
+layout(location = 32) uniform vec4 u_layer_mean[MATERIAL_LAYERS];    // each layer's mean linear albedo, roughness (far tier)
+layout(location = 40) uniform float u_layer_scale[MATERIAL_LAYERS];  // texture coordinates per m of each layer
+#ifdef TERRAIN_SPLAT
+// Splat maps (terrain/user_materials.h): TERRAIN_SPLAT RGBA images of layer weights, one texel per
+// height sample; u_splat_layers says which layer each channel weighs (-1: none).
+layout(binding = BINDING_TEX_5) uniform sampler2DArray u_splat;
+layout(location = 48) uniform ivec4 u_splat_layers[2];
+#endif
 
 in vec3 v_rel;
 in vec2 v_texel;
@@ -167,6 +177,62 @@ float wireframe() {
 #endif
 }
 
+#ifdef TERRAIN_SPLAT
+// The splat weights at heightmap texel t, normalised over the channels that name a layer; where
+// none weighs anything the first channel's layer takes it all.
+void splatWeights(vec2 t, out vec4 a, out vec4 b) {
+    vec2 uv = (t + 0.5) / u_tile_layer.zw;  // texel centres: sample i at (i + 0.5) / size
+    a = texture(u_splat, vec3(uv, 0.0)) * vec4(greaterThanEqual(u_splat_layers[0], ivec4(0)));
+#if TERRAIN_SPLAT > 1
+    b = texture(u_splat, vec3(uv, 1.0)) * vec4(greaterThanEqual(u_splat_layers[1], ivec4(0)));
+#else
+    b = vec4(0.0);
+#endif
+    float sum = dot(a, vec4(1.0)) + dot(b, vec4(1.0));
+    if (sum < 1e-4) {
+        a = vec4(1.0, 0.0, 0.0, 0.0);
+        sum = 1.0;
+    }
+    a /= sum;
+    b /= sum;
+}
+int splatLayer(int c) { return max(u_splat_layers[c / 4][c % 4], 0); }
+#endif
+
+#if TERRAIN_VIEW == 5
+// The layer with the largest weight at the drawn point (ties: the first), from the splat maps or
+// the height/slope rules as the shaded image blends them.
+int materialId(vec3 n) {
+#ifdef TERRAIN_SPLAT
+    vec4 a, b;
+    splatWeights(v_texel, a, b);
+    int best = 0;
+    float best_w = -1.0;
+    for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) {
+        float w = c < 4 ? a[c] : b[c - 4];
+        if (w > best_w) best = c, best_w = w;
+    }
+    return splatLayer(best);
+#else
+    vec2 world_xz = v_rel.xz + u_tex_offset;
+    float noise = texture(u_albedo, vec3(world_xz * (u_material.z * 0.031), float(ROCK))).g;
+    float bands = materialBands(v_sample + bandJitter(noise, u_material.x), u_bands);
+    const int order[4] = int[](SAND, GRASS, ROCK, SNOW);
+    int lower = int(min(floor(bands), 3.0));
+    float t = bands - float(lower);
+    float rock = rockWeight(n.y, u_material.y);
+    float dirt = dirtWeight(n.y, u_material.y, rock, bands);
+    float rest = (1.0 - dirt) * (1.0 - rock);
+    int ids[4] = int[](order[lower], order[min(lower + 1, 3)], DIRT, ROCK);
+    float ws[4] = float[]((1.0 - t) * rest, t * rest, dirt * (1.0 - rock), rock);
+    int best = 0;
+    for (int i = 1; i < 4; ++i)
+        if (ws[i] > ws[best]) best = i;
+    return ids[best];
+#endif
+}
+#endif
+
 #ifdef TERRAIN_VIEW
 void main() {
     vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
@@ -183,6 +249,12 @@ void main() {
     float e = px / max(u_max_error_px, 1e-6);
     vec3 c = e <= 1.0 ? mix(vec3(0.1, 0.25, 0.8), vec3(1.0, 0.9, 0.1), e) : mix(vec3(1.0, 0.4, 0.0), vec3(1.0, 0.0, 0.6), min(e - 1.0, 1.0));
     o_color = vec4(c * (0.5 + 0.5 * max(dot(n, u_sun_dir.xyz), 0.0)), px);
+#elif TERRAIN_VIEW == 5
+    // Material layers (alpha = the layer index, for tests and tools reading the HDR target).
+    const vec3 colors[8] = vec3[](vec3(0.9, 0.8, 0.4), vec3(0.1, 0.7, 0.1), vec3(0.45), vec3(1.0), vec3(0.45, 0.25, 0.1),
+                                  vec3(1.0, 0.1, 0.8), vec3(0.1, 0.8, 1.0), vec3(1.0, 0.45, 0.0));  // sand grass rock snow dirt, added
+    int id = materialId(n);
+    o_color = vec4(colors[id % 8] * (0.35 + 0.65 * max(dot(n, u_sun_dir.xyz), 0.0)), float(id));
 #else
 #if TERRAIN_VIEW == 1
     vec3 c = lodColor(v_lod.x);
@@ -226,32 +298,45 @@ vec3 layerDetail(int layer, vec2 uv) {
 layout(location = 26) uniform vec4 u_pom;         // depth_m, distance where the relief is gone (m), shadow strength, unused
 layout(location = 27) uniform ivec4 u_pom_steps;  // max linear steps, refinement steps, shadow steps, unused
 
-// What the relief at a point depends on, set once per pixel before the march: the planar uv's
-// gradients, the two band layers, their blend t, dirt and rock weights, the terrain normal.
+// What the relief at a point depends on, set once per pixel before the march: the planar
+// position's gradients (m), the two band layers, their blend t, dirt and rock weights (splat
+// maps: the channel weights), the terrain normal.
 vec2 g_uv_dx, g_uv_dy;
 ivec2 g_layers;
 vec3 g_weights;
+vec4 g_splat_a, g_splat_b;
 vec3 g_normal;
 
-float layerRelief(int layer, vec2 uv, vec2 dx, vec2 dy) {
-    return textureGrad(u_detail, vec3(uv, float(layer)), dx, dy).a;  // the detail array's alpha (materials.h)
+// Layer's relief at world position m (metres), its texture coordinates and gradients at its scale.
+float layerRelief(int layer, vec2 m) {
+    float k = u_layer_scale[layer];
+    return textureGrad(u_detail, vec3(m * k, float(layer)), g_uv_dx * k, g_uv_dy * k).a;  // the detail array's alpha (materials.h)
+}
+
+// p projected along the terrain normal's main axis (metres): rock's planar projection, and every
+// splat layer's.
+vec2 mainAxisMetres(vec3 p, vec3 n) {
+    vec3 q = p + vec3(u_tex_offset.x, 0.0, u_tex_offset.y);
+    vec3 an = abs(n);
+    return an.x >= an.y && an.x >= an.z ? q.zy : an.y >= an.z ? q.xz : q.xy;
 }
 
 // The blended relief height at camera-relative point p, weighted as main() blends the albedo; rock
 // in its main-axis projection (the triplanar blend's largest share).
 float pomHeight(vec3 p) {
-    vec2 world = p.xz + u_tex_offset;
-    vec2 uv = world * u_material.z;
-    float h = mix(layerRelief(g_layers.x, uv, g_uv_dx, g_uv_dy), layerRelief(g_layers.y, uv, g_uv_dx, g_uv_dy), g_weights.x);
-    if (g_weights.y > 0.0) h = mix(h, layerRelief(DIRT, uv, g_uv_dx, g_uv_dy), g_weights.y);
-    if (g_weights.z > 0.0) {
-        vec3 q = (p + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
-        vec3 an = abs(g_normal);
-        vec2 main_uv = an.x >= an.y && an.x >= an.z ? q.zy : an.y >= an.z ? q.xz : q.xy;
-        // The planar gradients scaled to the rock's texture size: close enough for a mip choice.
-        h = mix(h, layerRelief(ROCK, main_uv, g_uv_dx * 0.5, g_uv_dy * 0.5), g_weights.z);
-    }
+#ifdef TERRAIN_SPLAT
+    vec2 m = mainAxisMetres(p, g_normal);
+    float h = 0.0;
+    for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) h += (c < 4 ? g_splat_a[c] : g_splat_b[c - 4]) * layerRelief(splatLayer(c), m);
     return h;
+#else
+    vec2 world = p.xz + u_tex_offset;
+    float h = mix(layerRelief(g_layers.x, world), layerRelief(g_layers.y, world), g_weights.x);
+    if (g_weights.y > 0.0) h = mix(h, layerRelief(DIRT, world), g_weights.y);
+    // The planar gradients stand in for the main axis's: close enough for a mip choice.
+    if (g_weights.z > 0.0) h = mix(h, layerRelief(ROCK, mainAxisMetres(p, g_normal)), g_weights.z);
+    return h;
+#endif
 }
 #endif
 
@@ -267,6 +352,21 @@ void main() {
     // Detail (near tier) and texture (mid tier) weights by distance.
     float detail_fade = 1.0 - smoothstep(u_material.w * 0.5, u_material.w, dist);
     float textured = 1.0 - smoothstep(u_far_fade.x, u_far_fade.y, dist);
+#ifdef TERRAIN_SPLAT
+    // Splat maps place the layers (user_materials.h): each layer projected along the normal's
+    // main axis at its own scale, so cliffs do not stretch; rock, snow and grass shares for the
+    // far grass colour and wetness below come from the weights too.
+    vec4 splat_a, splat_b;
+    splatWeights(v_texel, splat_a, splat_b);
+    float rock = 0.0, snow = 0.0, grass = 0.0;
+    for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) {
+        float w = c < 4 ? splat_a[c] : splat_b[c - 4];
+        int layer = splatLayer(c);
+        rock += layer == ROCK ? w : 0.0;
+        snow += layer == SNOW ? w : 0.0;
+        grass += layer == GRASS ? w : 0.0;
+    }
+#else
     // Height bands (001): L = sum of clamp((h - start_i) / blend, 0, 1); layer floor(L)
     // blends into the next by fract(L). The height is jittered to break the bands (the coarse
     // rock noise: every tier fetches it, so band edges match across tiers).
@@ -281,6 +381,9 @@ void main() {
     // cliffs do not stretch. Snow holds on flatter ground only.
     float rock = rockWeight(n.y, u_material.y);
     float dirt = dirtWeight(n.y, u_material.y, rock, bands);
+    float snow = clamp(bands - 2.0, 0.0, 1.0) * (1.0 - rock);
+    float grass = grassWeight(bands, rock, dirt);
+#endif
     vec3 rel = v_rel;  // the point whose material shows: the drawn one, or where the relief's view ray lands
 #ifdef TERRAIN_POM
     // Parallax occlusion mapping over the blend of the layers' reliefs, with the same weights
@@ -288,11 +391,16 @@ void main() {
     // gradients: the march's offsets jump at the relief's silhouettes and would pick coarse mips.
     float pom_fade = 1.0 - smoothstep(u_pom.y * 0.5, u_pom.y, dist);
     float pom_shadow = 1.0;
-    g_uv_dx = dFdx(world_xz * u_material.z);  // here, in uniform control flow
-    g_uv_dy = dFdy(world_xz * u_material.z);
+    g_uv_dx = dFdx(world_xz);  // here, in uniform control flow
+    g_uv_dy = dFdy(world_xz);
     if (pom_fade > 0.0) {
+#ifdef TERRAIN_SPLAT
+        g_splat_a = splat_a;
+        g_splat_b = splat_b;
+#else
         g_layers = ivec2(order[lower], upper);
         g_weights = vec3(t, dirt, rock);
+#endif
         g_normal = n;
         vec3 to_eye = -v_rel / max(dist, 1e-6);
         float depth_m = u_pom.x * pom_fade;  // flattens with distance, so no pixel jumps where it ends
@@ -304,22 +412,44 @@ void main() {
     }
     world_xz = rel.xz + u_tex_offset;
 #endif
-    vec2 uv = world_xz * u_material.z;
-    vec4 albedo = mix(layerAlbedo(order[lower], uv, textured), layerAlbedo(upper, uv, textured), t);
+#ifdef TERRAIN_SPLAT
+    vec4 albedo = vec4(0.0);
 #if MATERIAL_TIER == 0
-    vec3 detail = mix(layerDetail(order[lower], uv), layerDetail(upper, uv), t);
+    vec3 detail = vec3(0.0);
+#endif
+    vec3 pw = rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y);
+    vec3 an = abs(n);
+    vec2 main_m = an.x >= an.y && an.x >= an.z ? pw.zy : an.y >= an.z ? pw.xz : pw.xy;
+    // Every channel fetched, weight 0 or not: no branch (llvmpipe would run both sides anyway), and
+    // the fetches stay in uniform control flow for their derivatives.
+    for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) {
+        float w = c < 4 ? splat_a[c] : splat_b[c - 4];
+        int layer = splatLayer(c);
+        vec2 uv = main_m * u_layer_scale[layer];
+        albedo += w * layerAlbedo(layer, uv, textured);
+#if MATERIAL_TIER == 0
+        detail += w * layerDetail(layer, uv);
+#endif
+    }
+    float far_grass = grass * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
+#else
+    vec2 uv_lower = world_xz * u_layer_scale[order[lower]], uv_upper = world_xz * u_layer_scale[upper];
+    vec4 albedo = mix(layerAlbedo(order[lower], uv_lower, textured), layerAlbedo(upper, uv_upper, textured), t);
+#if MATERIAL_TIER == 0
+    vec3 detail = mix(layerDetail(order[lower], uv_lower), layerDetail(upper, uv_upper), t);
 #endif
     // Beyond the grass blades' reach the grass layer takes their colour, so the meadow
     // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
-    float far_grass = grassWeight(bands, rock, dirt) * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
+    float far_grass = grass * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
     if (dirt > 0.0) {
-        albedo = mix(albedo, layerAlbedo(DIRT, uv, textured), dirt);
+        vec2 uv_dirt = world_xz * u_layer_scale[DIRT];
+        albedo = mix(albedo, layerAlbedo(DIRT, uv_dirt, textured), dirt);
 #if MATERIAL_TIER == 0
-        detail = mix(detail, layerDetail(DIRT, uv), dirt);
+        detail = mix(detail, layerDetail(DIRT, uv_dirt), dirt);
 #endif
     }
     if (rock > 0.0) {
-        vec3 p = (rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_material.z * 0.5;
+        vec3 p = (rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_layer_scale[ROCK];
         // Planar rock along the normal's main axis (tiers 0 and 1; tier 2: the mean).
         vec3 an = abs(n);
         vec2 main_uv = an.x >= an.y && an.x >= an.z ? p.zy : an.y >= an.z ? p.xz : p.xy;
@@ -334,6 +464,7 @@ void main() {
 #endif
         albedo = mix(albedo, rock_albedo, rock);
     }
+#endif
 #ifdef TERRAIN_POM
     // The relief's self-shadow darkens the albedo: the G-buffer has no sun-visibility channel
     // (docs/terrain-detail.md), and the pits it falls in would see less sky too.
@@ -353,7 +484,6 @@ void main() {
     if (u_wetness > 0.0) {
         // Wet ground: water in the pores darkens soil and sand (less on rock, little on
         // snow) and a water film makes every layer glossier.
-        float snow = clamp(bands - 2.0, 0.0, 1.0) * (1.0 - rock);
         float porous = (1.0 - 0.5 * rock) * (1.0 - 0.8 * snow);
         albedo.rgb *= 1.0 - 0.55 * u_wetness * porous;
         albedo.a = mix(albedo.a, 0.15, 0.85 * u_wetness);

@@ -15,6 +15,7 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kTex2 == BINDING_TEX_2);
     CHECK(binding::kTex3 == BINDING_TEX_3);
     CHECK(binding::kTex4 == BINDING_TEX_4);
+    CHECK(binding::kTex5 == BINDING_TEX_5);
     CHECK(binding::kTerrainNodes == BINDING_TERRAIN_NODES);
     CHECK(binding::kLightGrid == BINDING_LIGHT_GRID);
     CHECK(binding::kLights == BINDING_LIGHTS);
