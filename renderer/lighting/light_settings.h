@@ -18,7 +18,8 @@
 //   intensity I             irradiance scale at 1 m, [0, 1e7]
 //   direction X Y Z         spot axis, not all zero (normalised on use)
 //   cone INNER OUTER        deg, spot half-angles, 0 <= INNER <= OUTER <= 180
-//   shadow on|off           spot lights: may take a tile of the spot shadow atlas (default on)
+//   shadow on|off           spot lights: may take a tile of the spot shadow atlas; point lights a
+//                           depth cube with [shadows] point_enabled (default on)
 //   ground H                m, [0, 1e4]: the light stands H above the terrain at its x, z (y ignored)
 //   box X0 Y0 Z0 X1 Y1 Z1   m, world, two opposite corners
 //   count NX NY NZ          lights per axis, each [1, 10000], product <= kMaxVolumeLights

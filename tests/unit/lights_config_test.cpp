@@ -178,7 +178,7 @@ TEST_CASE("lights config: save then load reproduces the lists exactly and in ord
     CHECK(text.find("[sky]") < text.find("[lights]"));
     CHECK(text.find("[lights]") < text.find("[postfx]"));
     CHECK(contains(text, "\n; a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
-                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (spot lights, default on), ground H (m above the terrain) (one light.NAME key per entry, NAME: letters, "
+                         "direction X Y Z, cone INNER OUTER (deg), shadow on|off (default on; point lights with [shadows] point_enabled), ground H (m above the terrain) (one light.NAME key per entry, NAME: letters, "
                          "digits, _)\nlight.lantern = "));
     bool long_line = false;
     for (std::size_t b = 0, e; b < text.size(); b = e + 1) {
