@@ -203,6 +203,16 @@ double FrameRenderer::measureReferenceCopy(int width, int height) {
 
 namespace {
 
+// The counters a shadow scheme for local lights reports (spot atlas, point cubes): how many
+// lights asked, got a tile or cube, went without, and the caster instances drawn for them.
+template <class Stats>
+void reportShadowedLights(FrameReport& report, const std::string& prefix, const Stats& st) {
+    report.counters[prefix + "candidates"] = double(st.candidates);
+    report.counters[prefix + "shadowed"] = double(st.shadowed);
+    report.counters[prefix + "unshadowed"] = double(st.unshadowed);
+    report.counters[prefix + "caster_instances"] = double(st.caster_instances);
+}
+
 // Reads a texture back top row first (GL's rows start at the bottom).
 template <class T>
 void readTexture(GLuint texture, int width, int height, GLenum type, std::vector<T>& out, GLenum format = GL_RGBA) {
@@ -358,11 +368,7 @@ PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const Rend
                                                    const ShadowCaster& extra, FrameReport& report) {
     PointShadowInput input = point_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
     local_lights_->setPointShadowSlots(*point_shadows_);
-    const PointShadowStats& st = point_shadows_->stats();
-    report.counters["shadows.point_candidates"] = double(st.candidates);
-    report.counters["shadows.point_shadowed"] = double(st.shadowed);
-    report.counters["shadows.point_unshadowed"] = double(st.unshadowed);
-    report.counters["shadows.point_caster_instances"] = double(st.caster_instances);
+    reportShadowedLights(report, "shadows.point_", point_shadows_->stats());
     return input;
 }
 
@@ -370,11 +376,7 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
                                                  const ShadowCaster& extra, FrameReport& report) {
     SpotShadowInput input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
     local_lights_->setShadowSlots(*spot_shadows_);
-    const SpotShadowStats& st = spot_shadows_->stats();
-    report.counters["shadows.spot_candidates"] = double(st.candidates);
-    report.counters["shadows.spot_shadowed"] = double(st.shadowed);
-    report.counters["shadows.spot_unshadowed"] = double(st.unshadowed);
-    report.counters["shadows.spot_caster_instances"] = double(st.caster_instances);
+    reportShadowedLights(report, "shadows.spot_", spot_shadows_->stats());
     return input;
 }
 

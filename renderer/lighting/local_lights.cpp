@@ -514,22 +514,21 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             if (data.point.valid()) defines.push_back("HAS_POINT_SHADOWS");
             glUseProgram(rc.shaders.get("renderer/lighting/shaders/light_shade.glsl", defines)->id());
             bindBuffers();
-            if (data.spot.valid()) {
-                const SpotShadowInput& spot = *options.spot_shadows;
-                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kSpotShadowUniforms, spot.uniforms);
-                glBindTextureUnit(binding::kSpotShadowMap, ctx.texture(data.spot));
-                glBindSampler(binding::kSpotShadowMap, spot.compare_sampler);
-                glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.spot));
-                glBindSampler(binding::kSpotShadowDepth, spot.depth_sampler);
-            }
-            if (data.point.valid()) {
-                const PointShadowInput& point = *options.point_shadows;
-                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, point.uniforms);
-                glBindTextureUnit(binding::kPointShadowMap, ctx.texture(data.point));
-                glBindSampler(binding::kPointShadowMap, point.compare_sampler);
-                glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.point));
-                glBindSampler(binding::kPointShadowDepth, point.depth_sampler);
-            }
+            // One shadow input's uniforms, map (compare sampler) and raw depth (PCSS, debug).
+            const auto bindShadows = [&](const auto& input, TextureHandle map, int uniforms, int map_unit,
+                                         int depth_unit) {
+                glBindBufferBase(GL_UNIFORM_BUFFER, uniforms, input.uniforms);
+                glBindTextureUnit(map_unit, ctx.texture(map));
+                glBindSampler(map_unit, input.compare_sampler);
+                glBindTextureUnit(depth_unit, ctx.texture(map));
+                glBindSampler(depth_unit, input.depth_sampler);
+            };
+            if (data.spot.valid())
+                bindShadows(*options.spot_shadows, data.spot, binding::kSpotShadowUniforms, binding::kSpotShadowMap,
+                            binding::kSpotShadowDepth);
+            if (data.point.valid())
+                bindShadows(*options.point_shadows, data.point, binding::kPointShadowUniforms,
+                            binding::kPointShadowMap, binding::kPointShadowDepth);
             if (options.count) {
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "lights.evaluations"));
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "lights.exact"));
