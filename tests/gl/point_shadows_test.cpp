@@ -15,21 +15,7 @@ namespace {
 
 FrameRenderer& renderer() { return test::fileRenderer(); }
 
-// 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in
-// [-4, 4] m; its walls slope to the ground from |x| = 4 to 6 m).
-const std::filesystem::path& pillarMap() {
-    static test::TempDir dir("point_shadows");
-    static std::filesystem::path file = [] {
-        const int n = 129;
-        Heightmap map{n, n, std::vector<float>(std::size_t(n) * n, 0.0f)};
-        for (int z = 62; z <= 66; ++z)
-            for (int x = 62; x <= 66; ++x) map.samples[std::size_t(z * n + x)] = 1.0f;
-        std::filesystem::path f = dir.path / "pillar.png";
-        REQUIRE(saveHeightmapPng16(f, map).empty());
-        return f;
-    }();
-    return file;
-}
+const std::filesystem::path& pillarMap() { return test::pillarHeightmap("point_shadows"); }
 
 const glm::dvec3 kLamp{14.0, 8.0, 3.0};
 

@@ -26,6 +26,23 @@ namespace {
     return r;
 }
 
+// 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in
+// [-4, 4] m; its walls slope to the ground from |x| = 4 to 6 m), written once per test file into
+// a temporary folder named dir_name. The sun and the lamp shadow tests cast it.
+[[maybe_unused]] const std::filesystem::path& pillarHeightmap(const char* dir_name) {
+    static TempDir dir(dir_name);
+    static std::filesystem::path file = [] {
+        const int n = 129;
+        Heightmap map{n, n, std::vector<float>(std::size_t(n) * n, 0.0f)};
+        for (int z = 62; z <= 66; ++z)
+            for (int x = 62; x <= 66; ++x) map.samples[std::size_t(z * n + x)] = 1.0f;
+        std::filesystem::path f = dir.path / "pillar.png";
+        REQUIRE(saveHeightmapPng16(f, map).empty());
+        return f;
+    }();
+    return file;
+}
+
 // The same, with every program compiled once up front (a compile error fails the test).
 [[maybe_unused]] FrameRenderer& compiledFileRenderer() {
     FrameRenderer& r = fileRenderer();
