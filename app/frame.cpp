@@ -99,8 +99,8 @@ bool FrameRenderer::compilePrograms(std::string& errors) {
 InputErrors FrameRenderer::prepare(const Settings& s) {
     InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
-        objects_.reset();  // objects stand on the terrain
-        terrain_.reset();  // a disabled feature keeps nothing allocated
+        objects_.release();  // objects stand on the terrain
+        terrain_.release();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;
         return errors;
     }
@@ -114,11 +114,11 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
                                                            terrain_source_.splat_map == wanted.splat_map &&
                                                            terrain_source_.splat_layers == wanted.splat_layers;
     if (!same) {
-        objects_.reset();  // placed on the old terrain
-        terrain_.reset();
-        terrain_ = Terrain::load(wanted, shaders_, errors);
+        objects_.release();  // placed on the old terrain
+        terrain_.release();
+        terrain_.adopt(Terrain::load(wanted, shaders_, errors));
         terrain_source_ = wanted;
-        terrain_failed_ = terrain_ == nullptr;
+        terrain_failed_ = !terrain_;
     }
     prepareObjects(s, errors);
     return errors;
@@ -126,10 +126,10 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
 
 void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
     if (!terrain_ || !objectsWanted(s.objects)) {
-        objects_.reset();  // nothing placed: no object, no buffers
+        objects_.release();  // nothing placed: no object, no buffers
         return;
     }
-    if (!objects_) objects_ = std::make_unique<Objects>();
+    objects_.use();
     const Terrain* t = terrain_.get();
     const TerrainSettings ts = s.terrain;
     const TerrainMapping& m = t->mapping();
@@ -152,11 +152,11 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
     const double half = m.size_m * 0.5;
     const ScatterArea area{{ts.origin.x - half, ts.origin.z - half}, {ts.origin.x + half, ts.origin.z + half}};
     if (!objects_->prepare(s.objects, ground, area, [](const std::string& f) { return resolveInput(f); }, errors))
-        objects_.reset();
+        objects_.release();
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
-    terrain_ = std::move(terrain);
+    terrain_.adopt(std::move(terrain));
     terrain_failed_ = false;
 }
 
@@ -304,12 +304,11 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
         light_shadow_frusta_.insert(light_shadow_frusta_.end(), point_shadows_->frusta().begin(), point_shadows_->frusta().end());
     const std::span<const Frustum> spots(light_shadow_frusta_);
     if (!sunCastsShadows(s.shadows, sun)) {
-        sun_shadows_.reset();  // no sun shadows: no passes, no shadow map
+        sun_shadows_.release();  // no sun shadows: no passes, no shadow map
         terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, nullptr, spots);
         return {};
     }
-    if (!sun_shadows_) sun_shadows_ = std::make_unique<SunShadows>();
-    sun_shadows_->prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view);
+    sun_shadows_.use().prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view);
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
@@ -318,20 +317,19 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     report.counters["shadows.cascades"] = double(st.cascades);
     report.counters["shadows.drawn"] = double(st.drawn);
     report.counters["shadows.caster_instances"] = double(st.caster_instances);
-    report.counters["shadows.memory_bytes"] = double(st.memory_bytes);
     return shadows;
 }
 
 bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report) {
     if (sceneLightCount(s.lights) == 0) {
-        local_lights_.reset();  // no local lights: no passes, no buffers
+        local_lights_.release();  // no local lights: no passes, no buffers
         return false;
     }
     // LocalLights re-collects when the entries change; the sea they stand on is ours to watch.
     const std::pair<bool, float> water{s.water.enabled, s.water.level_m};
-    if (water != light_water_) local_lights_.reset();
+    if (water != light_water_) local_lights_.release();
     light_water_ = water;
-    if (!local_lights_) local_lights_ = std::make_unique<LocalLights>();
+    local_lights_.use();
     GroundHeight terrain;
     if (terrain_) terrain = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
     const GroundHeight ground = lightGround(terrain, s.water);  // the sea's surface where it covers the terrain
@@ -341,26 +339,23 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
     report.counters["lights.visible"] = double(st.visible);
     report.counters["lights.skipped"] = double(st.skipped);  // below [lights] min_screen_px
     report.counters["lights.build_ms"] = st.build_ms;
-    report.counters["lights.memory_bytes"] = double(st.memory_bytes);
     report.counters["lights.chunks"] = double(st.chunks);  // draws per pass that shades them (local_lights.h kLightChunk)
     return any;
 }
 
 bool FrameRenderer::prepareSpotShadows(const RenderContext& rc, const Settings& s) {
     if (s.shadows.enabled && s.shadows.spot_enabled) {
-        if (!spot_shadows_) spot_shadows_ = std::make_unique<SpotShadows>();
-        if (spot_shadows_->prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
+        if (spot_shadows_.use().prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
     }
-    spot_shadows_.reset();  // no shadowed spot light: no pass, no atlas
+    spot_shadows_.release();  // no shadowed spot light: no pass, no atlas
     return false;
 }
 
 bool FrameRenderer::preparePointShadows(const RenderContext& rc, const Settings& s) {
     if (s.shadows.enabled && s.shadows.point_enabled) {
-        if (!point_shadows_) point_shadows_ = std::make_unique<PointShadows>();
-        if (point_shadows_->prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
+        if (point_shadows_.use().prepare(s.shadows, local_lights_->lights(), rc.view, rc.matrices)) return true;
     }
-    point_shadows_.reset();  // no shadowed point light: no pass, no cubes
+    point_shadows_.release();  // no shadowed point light: no pass, no cubes
     return false;
 }
 
@@ -382,41 +377,79 @@ SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const Render
 
 void FrameRenderer::resetHistory() {
     postfx_.resetHistory();
-    weather_.reset();  // its previous camera (streak velocity); recreated by the next frame with weather
+    weather_.release();  // its previous camera (streak velocity); recreated by the next frame with weather
     if (taa_) taa_->reset();
     if (clouds_) clouds_->resetHistory();
     has_last_view_ = false;
     temporal_index_ = 0;
 }
 
+// One frame's inputs as every phase sees them.
+struct FrameRenderer::Frame {
+    const Settings& s;          // the sky at this time, lights pre-exposed (settingsAt)
+    const ViewParams& view;
+    double time_s;
+    RenderContext rc;
+    bool cut;                   // a camera cut (or a new run): every history is rejected
+    ViewParams previous_view;   // the motion vectors' previous camera (the view itself on a cut)
+    bool taa;                   // [postfx.taa] this frame
+    bool terrain;               // [terrain] on and loaded: everything opaque stands on it
+    bool shadow_view;           // [debug] view = shadow: lighting.sun's output, nothing on top
+    bool clouds;                // [clouds] draws something (they are lit through the sky's LUTs)
+    SkyLighting sky_light;      // the sun, moon and sky at the camera (CPU), once per frame
+    SunAndSky light;            // what the lighting, the sea, glass and weather are lit by
+    bool local_lights = false;  // some local light can light a visible point (prepareFeatures)
+};
+
 FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view, double time_s,
                                   const FrameRequest& request) {
+    Settings at_time;
+    const Settings& s = settingsAt(input, view, time_s, at_time);
+    Frame f = beginFrame(s, view, time_s, request);
+    FrameGraph graph;
+    FrameReport report;
+    SceneTargets scene = addClearPass(graph, f.rc, f.terrain);
+    f.local_lights = prepareFeatures(f, report);
+    const Casters casters = addCullPasses(graph, f, request, report);
+    const Shadows shadows = addShadowPasses(graph, f, casters, request, report);
+    addGeometryPasses(graph, f, casters, scene, report);
+    addLightingPasses(graph, f, shadows, scene, request);
+    addSkyAndTransparentPasses(graph, f, casters, shadows, scene, request, report);
+    addTemporalPasses(graph, f, scene, request, report);
+    addSceneReadbacks(graph, f, scene, request);
+    const TextureHandle display = addPostAndDebugPasses(graph, f, scene, shadows, request);
+    addOutputPasses(graph, f.rc, scene, display, request);
+    execute(graph, request, report);
+    reportAfterFrame(f, report);
+    return report;
+}
+
+const Settings& FrameRenderer::settingsAt(const Settings& input, const ViewParams& view, double time_s,
+                                          Settings& at_time) {
     // Pre-exposure (sky/night_light.h): every light of the frame scaled so that a night's radiances
     // stay inside the half-float target. The sky's lights all scale with sun_illuminance; the local
     // lights take the factor at upload (LocalLights::prepare) and auto exposure divides it out.
     // The day/night cycle ([sky] time_scale) first: the sky of this scene time.
     const SkySettings sky = skyAtTime(input.sky, time_s);
     pre_exposure_ = sky.enabled ? preExposure(sky_lighting_.get(sky, view.position).upLux(sky.sun_illuminance)) : 1.0;
-    const bool adjusted = pre_exposure_ != 1.0 || sky.time_of_day_h != input.sky.time_of_day_h;
-    Settings scaled;
-    if (adjusted) {
-        scaled = input;
-        scaled.sky = sky;
-        scaled.sky.sun_illuminance = float(double(sky.sun_illuminance) * pre_exposure_);
-    }
-    const Settings& s = adjusted ? scaled : input;
+    if (pre_exposure_ == 1.0 && sky.time_of_day_h == input.sky.time_of_day_h) return input;
+    at_time = input;
+    at_time.sky = sky;
+    at_time.sky.sun_illuminance = float(double(sky.sun_illuminance) * pre_exposure_);
+    return at_time;
+}
+
+FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewParams& view, double time_s,
+                                               const FrameRequest& request) {
     // A camera cut (or time running backwards: a new run) rejects every history this frame.
     const bool cut = !has_last_view_ || time_s < last_time_s_ ||
                      cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
-    const ViewParams previous_view = cut ? view : last_view_;  // the motion vectors' previous camera
+    const ViewParams previous_view = cut ? view : last_view_;
     last_view_ = view;
     last_time_s_ = time_s;
     has_last_view_ = true;
     const bool taa = s.taa.enabled && s.postfx.enabled;
-    if (!taa && taa_) {  // off: no history kept
-        taa_->release(device_);
-        taa_.reset();
-    }
+    if (!taa) taa_.release(device_);  // off: no history kept
     // A frame without history (the first after a reset or a cut) is not jittered: nothing
     // would average its offset out, and it matches an image rendered without TAA.
     // The index comes from the frame's place in its sequence when the caller knows it (a capture's
@@ -427,84 +460,112 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
                           ? std::uint64_t(((*request.sequence_frame % kIndexPeriod) + kIndexPeriod) % kIndexPeriod)
                           : temporal_index_ % kIndexPeriod;
     const glm::dvec2 jitter = taa && !cut ? TemporalAA::jitterPx(sequence_index_) : glm::dvec2(0.0);
-    RenderContext rc = context(view, s, time_s, jitter);
     ++temporal_index_;
-    FrameGraph graph;
+    const SkyLighting sky_light = sky_lighting_.get(s.sky, view.position);
+    return Frame{s,
+                 view,
+                 time_s,
+                 context(view, s, time_s, jitter),
+                 cut,
+                 previous_view,
+                 taa,
+                 s.terrain.enabled && bool(terrain_),
+                 s.debug.view == DebugView::Shadow,
+                 s.sky.enabled && cloudsActive(s.clouds),
+                 sky_light,
+                 sunAndSky(sky_light, s.sky)};
+}
 
-    const bool terrain = s.terrain.enabled && terrain_;
-    SceneTargets scene = addClearPass(graph, rc, terrain);
-    FrameReport report;
-    SunShadowInput shadows;
-    const bool shadow_view = s.debug.view == DebugView::Shadow;
-    const bool grass = terrain && s.grass.enabled;
-    // Local lights first: the shadowed spot lights' views widen the terrain selection.
-    const bool local_lights = terrain && !shadow_view && prepareLocalLights(rc, s, report);
-    if (!terrain) local_lights_.reset();
-    if (!(local_lights && prepareSpotShadows(rc, s))) spot_shadows_.reset();
-    if (!(local_lights && preparePointShadows(rc, s))) point_shadows_.reset();
+bool FrameRenderer::prepareFeatures(const Frame& f, FrameReport& report) {
+    const Settings& s = f.s;
+    // Local lights first: the shadowed spot and point lights' views widen the terrain selection.
+    const bool local_lights = f.terrain && !f.shadow_view && prepareLocalLights(f.rc, s, report);
+    if (!f.terrain) local_lights_.release();
+    if (!(local_lights && prepareSpotShadows(f.rc, s))) spot_shadows_.release();
+    if (!(local_lights && preparePointShadows(f.rc, s))) point_shadows_.release();
+    if (f.clouds)
+        report.counters["clouds.layers"] = double(clouds_.use().prepare(f.rc, s.clouds, s.sky, f.sky_light.sky_irradiance_up));
+    else
+        clouds_.release(device_);
+    return local_lights;
+}
+
+FrameRenderer::Casters FrameRenderer::addCullPasses(FrameGraph& graph, const Frame& f, const FrameRequest& request,
+                                                    FrameReport& report) {
+    const Settings& s = f.s;
+    const RenderContext& rc = f.rc;
+    Casters c;
     // Grass is culled first: the shadow passes draw the same blades.
-    BufferHandle blades;
-    if (grass) {
-        if (!grass_) grass_ = std::make_unique<Grass>();
-        grass_->setWetness(weatherWetness(s.weather));
-        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, view.position);  // else nothing to draw
-        if (reach) blades = grass_->addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass);
-        report.counters["grass.considered"] = reach ? double(grass_->considered()) : 0.0;
+    if (f.terrain && s.grass.enabled) {
+        Grass& grass = grass_.use();
+        grass.setWetness(weatherWetness(s.weather));
+        const bool reach = grassInReach(*terrain_, s.terrain, s.grass, f.view.position);  // else nothing to draw
+        if (reach) c.blades = grass.addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass);
+        report.counters["grass.considered"] = reach ? double(grass.considered()) : 0.0;
     } else {
-        grass_.reset();  // a disabled feature keeps nothing allocated
+        grass_.release();  // a disabled feature keeps nothing allocated
     }
-    ShadowCaster grass_caster;
-    if (blades.valid() && s.grass.cast_shadows)
-        grass_caster = {blades, double(s.grass.radius_m),
-                        [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }, {}};
+    if (c.blades.valid() && s.grass.cast_shadows)
+        c.caster = {c.blades, double(s.grass.radius_m),
+                    [this, &rc, &s](const glm::mat4& m) { grass_->drawShadow(rc, s.grass, m); }, {}};
     // Objects are culled next; their cull pass follows the grass's, so the one caster handle the
     // shadow passes read orders them after both.
-    BufferHandle object_lists;
-    if (terrain && objects_ && s.objects.enabled && !shadow_view) {
-        object_lists = objects_->addCullPass(graph, rc, s.objects, counters_, request.count_objects, grass_caster.reads);
+    if (f.terrain && objects_ && s.objects.enabled && !f.shadow_view) {
+        c.object_lists = objects_->addCullPass(graph, rc, s.objects, counters_, request.count_objects, c.caster.reads);
         const ObjectStats& st = objects_->stats();
         report.counters["objects.models"] = double(st.models);
         report.counters["objects.placed"] = double(st.instances);
-    } else if (!terrain) {
-        objects_.reset();
+    } else if (!f.terrain) {
+        objects_.release();
     }
-    if (object_lists.valid() && s.objects.cast_shadows) {
-        auto grass_draw = grass_caster.draw;
-        grass_caster = {object_lists, std::max(grass_caster.valid() ? grass_caster.reach_m : 0.0, double(s.objects.shadow_distance_m)),
-                        [this, &rc, grass_draw](const glm::mat4& m) {
-                            if (grass_draw) grass_draw(m);
-                            objects_->drawShadow(rc, m);
-                        },
-                        {}};
+    if (c.object_lists.valid() && s.objects.cast_shadows) {
+        auto grass_draw = c.caster.draw;
+        c.caster = {c.object_lists, std::max(c.caster.valid() ? c.caster.reach_m : 0.0, double(s.objects.shadow_distance_m)),
+                    [this, &rc, grass_draw](const glm::mat4& m) {
+                        if (grass_draw) grass_draw(m);
+                        objects_->drawShadow(rc, m);
+                    },
+                    {}};
     }
     // The point-light cubes draw only the casters near each light: the objects within its radius,
     // the grass (all within grass radius_m of the camera) where the light reaches into it.
-    if (grass_caster.valid()) {
-        const bool grass_casts = blades.valid() && s.grass.cast_shadows;
-        const bool objects_cast = object_lists.valid() && s.objects.cast_shadows;
-        grass_caster.draw_near = [this, &rc, &s, grass_casts, objects_cast, position = view.position](
-                                     const glm::dvec3& centre, double radius, std::span<const glm::mat4> faces,
-                                     const std::function<void(std::size_t)>& before) {
+    if (c.caster.valid()) {
+        const bool grass_casts = c.blades.valid() && s.grass.cast_shadows;
+        const bool objects_cast = c.object_lists.valid() && s.objects.cast_shadows;
+        c.caster.draw_near = [this, &rc, &s, grass_casts, objects_cast, position = f.view.position](
+                                 const glm::dvec3& centre, double radius, std::span<const glm::mat4> faces,
+                                 const std::function<void(std::size_t)>& before) {
             if (grass_casts && glm::length(centre - position) < radius + double(s.grass.radius_m))
-                for (std::size_t f = 0; f < faces.size(); ++f) {
-                    before(f);
-                    grass_->drawShadow(rc, s.grass, faces[f]);
+                for (std::size_t i = 0; i < faces.size(); ++i) {
+                    before(i);
+                    grass_->drawShadow(rc, s.grass, faces[i]);
                 }
             if (objects_cast) objects_->drawShadowNear(rc, centre, radius, faces, before);
         };
     }
-    SpotShadowInput spot_input;
-    PointShadowInput point_input;
-    if (terrain) {
-        shadows = addTerrainAndShadowPasses(graph, rc, s, request.shadow_fit_view, report, grass_caster);
-        if (spot_shadows_) spot_input = addSpotShadowPass(graph, rc, s, grass_caster, report);
-        if (point_shadows_) point_input = addPointShadowPass(graph, rc, s, grass_caster, report);
+    return c;
+}
+
+FrameRenderer::Shadows FrameRenderer::addShadowPasses(FrameGraph& graph, const Frame& f, const Casters& casters,
+                                                      const FrameRequest& request, FrameReport& report) {
+    Shadows shadows;
+    if (!f.terrain) return shadows;
+    shadows.sun = addTerrainAndShadowPasses(graph, f.rc, f.s, request.shadow_fit_view, report, casters.caster);
+    if (spot_shadows_) shadows.spot = addSpotShadowPass(graph, f.rc, f.s, casters.caster, report);
+    if (point_shadows_) shadows.point = addPointShadowPass(graph, f.rc, f.s, casters.caster, report);
+    return shadows;
+}
+
+void FrameRenderer::addGeometryPasses(FrameGraph& graph, const Frame& f, const Casters& casters, SceneTargets& scene,
+                                      FrameReport& report) {
+    const Settings& s = f.s;
+    if (f.terrain) {
         // Beyond the blades the terrain's grass band takes their mean colour.
         const float fade_start = std::min(s.grass.thin_start, 0.999f) * s.grass.radius_m;
-        terrain_->setFarGrass(grass ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
+        terrain_->setFarGrass(s.grass.enabled ? glm::vec4(grassMeanAlbedo(s.grass), s.grass.far_color_strength) : glm::vec4(0.0f),
                               glm::vec2(fade_start, s.grass.radius_m));
         terrain_->setWetness(weatherWetness(s.weather));  // 0 (dry) without rain
-        addTerrainPass(graph, rc, *terrain_, s.terrain, scene);
+        addTerrainPass(graph, f.rc, *terrain_, s.terrain, scene);
         const TerrainCounters& c = terrain_->counters();
         report.counters["terrain.triangles"] = double(c.triangles);
         report.counters["terrain.nodes"] = double(c.nodes);
@@ -517,71 +578,66 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         if (s.terrain.tessellation.enabled) report.counters["terrain.tess_patches"] = double(c.tess_patches);
         report.counters["terrain.select_ms"] = c.select_ms;
     }
-    if (blades.valid()) grass_->addGbufferPass(graph, rc, s.grass, blades, scene);
-    if (object_lists.valid()) objects_->addGbufferPass(graph, rc, s.objects, object_lists, scene);
-    // Clouds need the sky (they are lit through its transmittance LUT); off: no object, no pass.
-    const bool clouds = s.sky.enabled && cloudsActive(s.clouds);
-    if (clouds) {
-        if (!clouds_) clouds_ = std::make_unique<Clouds>();
-        report.counters["clouds.layers"] =
-            double(clouds_->prepare(rc, s.clouds, s.sky, sky_lighting_.get(s.sky, view.position).sky_irradiance_up));
-    } else if (clouds_) {
-        clouds_->releaseHistory(device_);
-        clouds_.reset();
-    }
+    if (casters.blades.valid()) grass_->addGbufferPass(graph, f.rc, s.grass, casters.blades, scene);
+    if (casters.object_lists.valid()) objects_->addGbufferPass(graph, f.rc, s.objects, casters.object_lists, scene);
+}
+
+void FrameRenderer::addLightingPasses(FrameGraph& graph, const Frame& f, const Shadows& shadows, SceneTargets& scene,
+                                      const FrameRequest& request) {
+    const Settings& s = f.s;
     if (scene.albedo.valid()) {
-        const SkyLighting& sky = sky_lighting_.get(s.sky, view.position);
-        if (s.ssao.enabled) scene.ao = addSsaoPasses(graph, rc, scene, s.ssao);
-        SunAndSky light = sunAndSky(sky, s.sky);
-        const bool sunlit = sky.sun_illuminance.x + sky.sun_illuminance.y + sky.sun_illuminance.z > 0.0;
-        if (clouds && s.clouds.shadows && sunlit) scene.cloud_shadow = clouds_->addShadowPass(graph, rc, light.cloud_shadow_map);
-        addSunLightingPass(graph, rc, light, scene, shadows, s.debug.view);
-        if (local_lights) {
+        if (s.ssao.enabled) scene.ao = addSsaoPasses(graph, f.rc, scene, s.ssao);
+        SunAndSky light = f.light;
+        const glm::dvec3& sun = f.sky_light.sun_illuminance;
+        if (f.clouds && s.clouds.shadows && sun.x + sun.y + sun.z > 0.0)
+            scene.cloud_shadow = clouds_->addShadowPass(graph, f.rc, light.cloud_shadow_map);
+        addSunLightingPass(graph, f.rc, light, scene, shadows.sun, s.debug.view);
+        if (f.local_lights) {
             LightPassOptions options;
             options.count = request.count_lights;
             options.heat = s.debug.view == DebugView::Lights || request.light_heat;
             // water.surface and objects.transparent shade them forward
             options.forward = request.forward_lights || s.water.enabled || (objects_ && objects_->hasTransparent());
-            options.spot_shadows = &spot_input;
-            options.point_shadows = &point_input;
-            local_lights_->addPasses(graph, rc, scene, counters_, options);
+            options.spot_shadows = &shadows.spot;
+            options.point_shadows = &shadows.point;
+            local_lights_->addPasses(graph, f.rc, scene, counters_, options);
         }
     }
-    if (s.debug.grid && !shadow_view) addGridPass(graph, rc, s.debug, s.sky, scene);
-    if (shadow_view) {
-        // [debug] view = shadow shows the HDR target as lighting.sun left it: nothing on top.
-    } else if (s.sky.enabled) {
-        if (!sky_) sky_ = std::make_unique<SkyAtmosphere>();
-        sky_->addLutPasses(graph, rc, s.sky);
-    } else {
-        sky_.reset();  // a disabled feature keeps nothing allocated
-    }
+    // The debug grid on the lit ground, under the aerial perspective like the ground.
+    if (s.debug.grid && !f.shadow_view) addGridPass(graph, f.rc, s.debug, s.sky, scene);
+}
+
+void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f, const Casters& casters,
+                                               const Shadows& shadows, SceneTargets& scene, const FrameRequest& request,
+                                               FrameReport& report) {
+    const Settings& s = f.s;
+    const RenderContext& rc = f.rc;
+    if (!s.sky.enabled) sky_.release();  // a disabled feature keeps nothing allocated
+    else if (!f.shadow_view) sky_.use().addLutPasses(graph, rc, s.sky);
     // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
-    const bool water = s.water.enabled && !shadow_view;
+    const bool water = s.water.enabled && !f.shadow_view;
     if (water) {
-        if (!water_) water_ = std::make_unique<Water>();
-        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
-        const double ground = terrain ? terrain_->heightAt(view.position.x, view.position.z) : std::nan("");
+        Water& sea = water_.use();
+        const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
         const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
-        water_->prepare(s.water, view, time_s, {light.sun_irradiance, light.sky_up, light.ground_up}, sky_.get(), ground,
-                        ripples);
-        water_->addSurfacePasses(graph, rc, scene, sky_.get(), local_lights ? local_lights_.get() : nullptr, shadows);
-        const WaterStats& st = water_->stats();
+        sea.prepare(s.water, f.view, f.time_s, {f.light.sun_irradiance, f.light.sky_up, f.light.ground_up}, sky_.get(),
+                    ground, ripples);
+        sea.addSurfacePasses(graph, rc, scene, sky_.get(), f.local_lights ? local_lights_.get() : nullptr, shadows.sun);
+        const WaterStats& st = sea.stats();
         report.counters["water.vertices"] = double(st.vertices);
         report.counters["water.triangles"] = double(st.triangles);
         report.counters["water.waves"] = double(st.waves);
         report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
     } else if (!s.water.enabled) {
-        water_.reset();  // a disabled feature keeps nothing allocated
+        water_.release();  // a disabled feature keeps nothing allocated
     }
     // Glass and other BLEND materials over the sea, before the aerial perspective fogs both.
-    if (object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
-        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+    if (casters.object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
         ForwardLight forward;
-        forward.sun_irradiance = light.sun_irradiance;
-        forward.sky_up = light.sky_up;
-        forward.ground_up = light.ground_up;
-        if (local_lights) {
+        forward.sun_irradiance = f.light.sun_irradiance;
+        forward.sky_up = f.light.sky_up;
+        forward.ground_up = f.light.ground_up;
+        if (f.local_lights) {
             forward.lights_define = local_lights_->define();
             forward.bind_lights = [this] { local_lights_->bindForForward(); };
             forward.light_chunk = kLightChunk;
@@ -591,59 +647,79 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
         report.counters["objects.transparent"] = double(objects_->transparentDrawn());
         report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
     }
-    if (!shadow_view && s.sky.enabled) {
+    if (!f.shadow_view && s.sky.enabled) {
         sky_->addScenePasses(graph, rc, s.sky, scene);
-        if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene, cut);
+        if (f.clouds) clouds_->addShellPass(graph, rc, *sky_, scene, f.cut);
     }
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
-    if (s.weather.enabled && !shadow_view) {
-        if (!weather_) weather_ = std::make_unique<Weather>();
-        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
-        weather_->addPasses(graph, rc, s.weather, s.clouds, light, terrain ? terrain_.get() : nullptr, s.terrain, scene,
-                            counters_, request.count_weather);
-        report.counters["weather.drop_cells"] = double(weather_->stats().drop_cells);
-        report.counters["weather.drop_candidates"] = double(weather_->stats().drop_candidates);
-        report.counters["weather.splash_candidates"] = double(weather_->stats().splash_candidates);
+    if (s.weather.enabled && !f.shadow_view) {
+        Weather& weather = weather_.use();
+        weather.addPasses(graph, rc, s.weather, s.clouds, f.light, f.terrain ? terrain_.get() : nullptr, s.terrain, scene,
+                          counters_, request.count_weather);
+        report.counters["weather.drop_cells"] = double(weather.stats().drop_cells);
+        report.counters["weather.drop_candidates"] = double(weather.stats().drop_candidates);
+        report.counters["weather.splash_candidates"] = double(weather.stats().splash_candidates);
     } else {
-        weather_.reset();
+        weather_.release();
     }
+}
+
+void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
+                                      FrameReport& report) {
     // The frame's motion vectors from the camera's motion since the previous frame (none on a cut).
     TextureHandle velocity;
-    if ((taa || request.velocity) && scene.depth.valid())
-        velocity = addVelocityPass(graph, rc, scene.depth, previous_view);
+    if ((f.taa || request.velocity) && scene.depth.valid())
+        velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
     if (request.velocity && velocity.valid())
         addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);
-    if (taa) {
-        if (!taa_) taa_ = std::make_unique<TemporalAA>();
-        scene.hdr = taa_->addPass(graph, rc, scene.hdr, scene.depth, velocity, s.taa, cut);
+    if (f.taa) {
+        scene.hdr = taa_.use().addPass(graph, f.rc, scene.hdr, scene.depth, velocity, f.s.taa, f.cut);
         report.counters["postfx.taa.history_frames"] = double(taa_->historyFrames());
     }
-    if (clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
-    report.counters["temporal.cut"] = cut ? 1.0 : 0.0;
-    if (request.count_nonfinite) addNonfiniteCountPass(graph, rc, scene.hdr, counters_);
+    if (f.clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
+    report.counters["temporal.cut"] = f.cut ? 1.0 : 0.0;
+}
+
+void FrameRenderer::addSceneReadbacks(FrameGraph& graph, const Frame& f, const SceneTargets& scene,
+                                      const FrameRequest& request) {
+    if (request.count_nonfinite) addNonfiniteCountPass(graph, f.rc, scene.hdr, counters_);
     if (request.light_heat && scene.light_heat.valid())
         addReadbackPass(graph, "lights.heat_readback", scene.light_heat, GL_FLOAT, *request.light_heat);
     if (request.depth && scene.depth.valid())
         addReadbackPass(graph, "capture.depth_readback", scene.depth, GL_FLOAT, *request.depth, GL_DEPTH_COMPONENT);
+}
 
+TextureHandle FrameRenderer::addPostAndDebugPasses(FrameGraph& graph, const Frame& f, const SceneTargets& scene,
+                                                   const Shadows& shadows, const FrameRequest& request) {
+    const Settings& s = f.s;
     const bool shown = request.capture_ldr || request.present;  // else the graph culls the chain
-    TextureHandle display = postfx_.addPasses(graph, rc, scene.hdr, s, scene.depth, shown);
-    if (s.debug.view == DebugView::ShadowMap)
-        display = addShadowMapViewPass(graph, rc, shadows, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
-    else if (s.debug.view == DebugView::SpotAtlas)
-        display = addSpotAtlasViewPass(graph, rc, spot_input, spot_shadows_ ? spot_shadows_->tilesPerSide() : 0);
-    else if (s.debug.view == DebugView::PointShadows)
-        display = addPointShadowViewPass(graph, rc, point_input, point_shadows_ ? point_shadows_->cubes() : 0);
-    else if (s.debug.view != DebugView::Final && s.debug.view != DebugView::Cascades)  // cascades: tinted final image
-        display = addDebugViewPass(graph, rc, s.debug, scene);
+    const TextureHandle display = postfx_.addPasses(graph, f.rc, scene.hdr, s, scene.depth, shown);
+    switch (s.debug.view) {
+        case DebugView::Final:
+        case DebugView::Cascades:  // the final image, tinted by lighting.sun
+            return display;
+        case DebugView::ShadowMap:
+            return addShadowMapViewPass(graph, f.rc, shadows.sun, sun_shadows_ ? int(sun_shadows_->cascades().size()) : 0);
+        case DebugView::SpotAtlas:
+            return addSpotAtlasViewPass(graph, f.rc, shadows.spot, spot_shadows_ ? spot_shadows_->tilesPerSide() : 0);
+        case DebugView::PointShadows:
+            return addPointShadowViewPass(graph, f.rc, shadows.point, point_shadows_ ? point_shadows_->cubes() : 0);
+        default:
+            return addDebugViewPass(graph, f.rc, s.debug, scene);
+    }
+}
 
+void FrameRenderer::addOutputPasses(FrameGraph& graph, const RenderContext& rc, const SceneTargets& scene,
+                                    TextureHandle display, const FrameRequest& request) {
     if (request.capture_ldr) addReadbackPass(graph, "capture.readback", display, GL_UNSIGNED_BYTE, *request.capture_ldr);
     if (request.capture_hdr)
         addReadbackPass(graph, request.capture_ldr ? "capture.readback_hdr" : "capture.readback", scene.hdr, GL_HALF_FLOAT,
                         *request.capture_hdr);
     if (request.present) addPresentPass(graph, rc, display);
+}
 
+void FrameRenderer::execute(FrameGraph& graph, const FrameRequest& request, FrameReport& report) {
     graph.compile();
     timers_.beginFrame(frame_);
     graph.execute(pool_, &timers_);
@@ -655,40 +731,36 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     if (request.graph_dot) *request.graph_dot = graph.dot();
     report.executed = graph.executedPasses();
     report.culled = graph.culledPasses();
+}
+
+template <class F>
+void FrameRenderer::forEachFeature(F&& f) const {
+    f(terrain_), f(grass_), f(sky_), f(clouds_), f(local_lights_), f(sun_shadows_), f(spot_shadows_), f(point_shadows_),
+        f(water_), f(objects_), f(weather_), f(taa_);
+}
+
+void FrameRenderer::reportAfterFrame(const Frame& f, FrameReport& report) const {
     // GPU memory held after the frame, per feature (only for features that exist this frame).
-    if (terrain_) report.counters["terrain.memory_bytes"] = double(terrain_->gpuMemoryBytes());
-    if (grass_) report.counters["grass.memory_bytes"] = double(grass_->memoryBytes());
-    if (sky_) report.counters["sky.memory_bytes"] = double(sky_->memoryBytes());
-    if (clouds_) report.counters["clouds.memory_bytes"] = double(clouds_->memoryBytes());
-    if (local_lights_) report.counters["lights.memory_bytes"] = double(local_lights_->stats().memory_bytes);
-    if (sun_shadows_) report.counters["shadows.memory_bytes"] = double(sun_shadows_->stats().memory_bytes);
-    if (spot_shadows_) report.counters["shadows.spot_memory_bytes"] = double(spot_shadows_->memoryBytes());
-    if (point_shadows_) report.counters["shadows.point_memory_bytes"] = double(point_shadows_->memoryBytes());
-    if (water_) report.counters["water.memory_bytes"] = double(water_->memoryBytes());
-    if (objects_) report.counters["objects.memory_bytes"] = double(objects_->memoryBytes());
-    if (weather_) report.counters["weather.memory_bytes"] = double(weather_->memoryBytes());
-    if (const std::size_t postfx = postfx_.memoryBytes() + (taa_ ? taa_->memoryBytes() : 0); postfx > 0)
+    forEachFeature([&report](const auto& slot) {
+        if (slot && slot.memoryCounter()) report.counters[slot.memoryCounter()] = double(slot.memoryBytes());
+    });
+    if (const std::size_t postfx = postfx_.memoryBytes() + taa_.memoryBytes(); postfx > 0)
         report.counters["postfx.memory_bytes"] = double(postfx);
-    report.counters["sky.pre_exposure"] = pre_exposure_;
-    if (s.lens_flare.enabled) report.counters["postfx.lens_flare.sun_visibility"] = rc.sun_visibility;
-    if (s.sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
-    report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
-    report.counters["sky.lux"] = sky_lighting_.get(s.sky, view.position).upLux(s.sky.sun_illuminance);  // physical: the scaled units cancel
     report.counters["gpu.transient_bytes"] = double(pool_.bytes());
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
-    return report;
+    const SkySettings& sky = f.s.sky;
+    report.counters["sky.pre_exposure"] = pre_exposure_;
+    if (f.s.lens_flare.enabled) report.counters["postfx.lens_flare.sun_visibility"] = f.rc.sun_visibility;
+    if (sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
+    report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
+    report.counters["sky.lux"] = f.sky_light.upLux(sky.sun_illuminance);  // physical: the scaled units cancel
 }
 
 std::size_t FrameRenderer::gpuMemoryBytes() const {
-    return pool_.bytes() + std::size_t(frame_uniforms_.size()) + counters_.memoryBytes() +
-           (terrain_ ? terrain_->gpuMemoryBytes() : 0) + (grass_ ? grass_->memoryBytes() : 0) +
-           (sky_ ? sky_->memoryBytes() : 0) + (clouds_ ? clouds_->memoryBytes() : 0) +
-           (local_lights_ ? local_lights_->stats().memory_bytes : 0) +
-           (sun_shadows_ ? sun_shadows_->stats().memory_bytes : 0) + (spot_shadows_ ? spot_shadows_->memoryBytes() : 0) +
-           (point_shadows_ ? point_shadows_->memoryBytes() : 0) +
-           (water_ ? water_->memoryBytes() : 0) + (weather_ ? weather_->memoryBytes() : 0) + postfx_.memoryBytes() +
-           (taa_ ? taa_->memoryBytes() : 0) + blue_noise_.bytes() +
-           (objects_ ? objects_->memoryBytes() : 0);
+    std::size_t bytes = pool_.bytes() + std::size_t(frame_uniforms_.size()) + counters_.memoryBytes() +
+                        postfx_.memoryBytes() + blue_noise_.bytes();
+    forEachFeature([&bytes](const auto& slot) { bytes += slot.memoryBytes(); });
+    return bytes;
 }
 
 }  // namespace vista

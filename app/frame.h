@@ -6,6 +6,7 @@
 #include "config/settings.h"
 #include "terrain/grass/grass.h"
 #include "renderer/meshes/objects.h"
+#include "renderer/feature_slot.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_timers.h"
@@ -104,7 +105,7 @@ public:
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
-    std::unique_ptr<Terrain> releaseTerrain() { return std::move(terrain_); }  // benches swap terrains
+    std::unique_ptr<Terrain> releaseTerrain() { return terrain_.take(); }  // benches swap terrains
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
     // Forgets every temporal state, so the next frame renders as the first frame of a fresh
@@ -133,6 +134,63 @@ public:
     std::uint64_t frameIndex() const { return frame_; }
 
 private:
+    struct Frame;  // this frame's settings, camera, context and light (frame.cpp)
+    // The casters every shadow pass draws besides the terrain: the culled grass and objects.
+    struct Casters {
+        BufferHandle blades;        // grass.cull's lists (invalid: no grass this frame)
+        BufferHandle object_lists;  // objects.cull's lists (invalid: no objects this frame)
+        ShadowCaster caster;        // both, as the shadow passes draw them
+    };
+    // What the lighting passes sample of the shadow passes.
+    struct Shadows {
+        SunShadowInput sun;
+        SpotShadowInput spot;
+        PointShadowInput point;
+    };
+
+    // The phases of render(), in order.
+    // The sky of this scene time ([sky] time_scale) with every light scaled by the pre-exposure
+    // (sky/night_light.h); `at_time` holds the copy when either differs from the input.
+    const Settings& settingsAt(const Settings& input, const ViewParams& view, double time_s, Settings& at_time);
+    // Camera cut, jitter, the render context and the frame's sun and sky light.
+    Frame beginFrame(const Settings& s, const ViewParams& view, double time_s, const FrameRequest& request);
+    // Local lights and which of them get a spot tile or a point cube, and the clouds; drops what
+    // is off. True: some local light can light a visible point.
+    bool prepareFeatures(const Frame& f, FrameReport& report);
+    // grass.cull and objects.cull: what the view and the shadow passes draw.
+    Casters addCullPasses(FrameGraph& graph, const Frame& f, const FrameRequest& request, FrameReport& report);
+    // The sun cascades, the spot atlas and the point cubes (the terrain's selection covers them all).
+    Shadows addShadowPasses(FrameGraph& graph, const Frame& f, const Casters& casters, const FrameRequest& request,
+                            FrameReport& report);
+    // The G-buffer: terrain, grass, objects.
+    void addGeometryPasses(FrameGraph& graph, const Frame& f, const Casters& casters, SceneTargets& scene,
+                           FrameReport& report);
+    // SSAO, cloud shadows, the sun (or moon) and the local lights into the HDR target.
+    void addLightingPasses(FrameGraph& graph, const Frame& f, const Shadows& shadows, SceneTargets& scene,
+                           const FrameRequest& request);
+    // Over the lit scene, back to front: the sea, glass, the sky and its aerial perspective, clouds,
+    // the view under water, rain or snow.
+    void addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f, const Casters& casters, const Shadows& shadows,
+                                    SceneTargets& scene, const FrameRequest& request, FrameReport& report);
+    // Motion vectors and TAA (and the velocity readback a test asks for).
+    void addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
+                           FrameReport& report);
+    // What a test reads of the scene besides the image: non-finite pixels, light heat, depth.
+    void addSceneReadbacks(FrameGraph& graph, const Frame& f, const SceneTargets& scene, const FrameRequest& request);
+    // The post chain, or the debug view in its place: the image shown.
+    TextureHandle addPostAndDebugPasses(FrameGraph& graph, const Frame& f, const SceneTargets& scene,
+                                        const Shadows& shadows, const FrameRequest& request);
+    // The captured images and the window's blit.
+    void addOutputPasses(FrameGraph& graph, const RenderContext& rc, const SceneTargets& scene, TextureHandle display,
+                         const FrameRequest& request);
+    // Compiles and runs the graph; the frame's timers, counters and pool move on.
+    void execute(FrameGraph& graph, const FrameRequest& request, FrameReport& report);
+    // Memory per feature and the sky's counters, after the frame.
+    void reportAfterFrame(const Frame& f, FrameReport& report) const;
+    // Applies f to every feature slot (memory counters, the renderer's total).
+    template <class F>
+    void forEachFeature(F&& f) const;
+
     // Selects the terrain (widened for shadow casters when the sun casts shadows) and adds the
     // "shadows.cascadeN" passes (drawing `extra`, the grass, too); returns what lighting.sun
     // samples (invalid: no sun shadows).
@@ -161,23 +219,23 @@ private:
     gl::VertexArray empty_vao_;
     gl::Buffer frame_uniforms_;
     std::uint64_t frame_ = 0;
-    std::unique_ptr<Terrain> terrain_;
-    std::unique_ptr<SkyAtmosphere> sky_;  // LUTs kept across frames
-    std::unique_ptr<Clouds> clouds_;      // null while [clouds] draws nothing
-    std::unique_ptr<LocalLights> local_lights_;  // null while the scene has no local lights
-    std::pair<bool, float> light_water_{false, 0.0f};
-    double pre_exposure_ = 1.0;  // this frame's (sky/night_light.h), set by render()  // [water] enabled, level_m the lights were placed over
-    std::unique_ptr<SunShadows> sun_shadows_;    // null while the sun casts no shadows
-    std::unique_ptr<SpotShadows> spot_shadows_;  // null while no spot light is shadowed
-    std::unique_ptr<PointShadows> point_shadows_;  // null while no point light is shadowed
+    FeatureSlot<Terrain> terrain_{"terrain.memory_bytes"};
+    FeatureSlot<SkyAtmosphere> sky_{"sky.memory_bytes"};  // LUTs kept across frames
+    FeatureSlot<Clouds> clouds_{"clouds.memory_bytes"};  // empty while [clouds] draws nothing
+    FeatureSlot<LocalLights> local_lights_{"lights.memory_bytes"};  // empty while the scene has no local lights
+    std::pair<bool, float> light_water_{false, 0.0f};  // [water] enabled, level_m the lights were placed over
+    double pre_exposure_ = 1.0;  // this frame's (sky/night_light.h), set by render()
+    FeatureSlot<SunShadows> sun_shadows_{"shadows.memory_bytes"};  // empty while the sun casts no shadows
+    FeatureSlot<SpotShadows> spot_shadows_{"shadows.spot_memory_bytes"};  // empty while no spot light is shadowed
+    FeatureSlot<PointShadows> point_shadows_{"shadows.point_memory_bytes"};  // empty while no point light is shadowed
     std::vector<Frustum> light_shadow_frusta_;   // this frame's spot and point shadow views (the terrain selection covers them)
-    std::unique_ptr<Grass> grass_;        // null while grass is off (no buffers)
-    std::unique_ptr<Weather> weather_;    // null while [weather] is off (keeps the last camera for streaks)
-    std::unique_ptr<Water> water_;        // null while [water] is off (no buffers)
-    std::unique_ptr<Objects> objects_;    // null while [objects] places nothing (no buffers)
+    FeatureSlot<Grass> grass_{"grass.memory_bytes"};  // empty while grass is off (no buffers)
+    FeatureSlot<Weather> weather_{"weather.memory_bytes"};  // empty while [weather] is off (keeps the last camera for streaks)
+    FeatureSlot<Water> water_{"water.memory_bytes"};  // empty while [water] is off (no buffers)
+    FeatureSlot<Objects> objects_{"objects.memory_bytes"};  // empty while [objects] places nothing (no buffers)
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
-    std::unique_ptr<TemporalAA> taa_;     // null while [postfx.taa] is off
+    FeatureSlot<TemporalAA> taa_{nullptr};  // empty while [postfx.taa] is off (its bytes count as postfx's)
     ViewParams last_view_;                // the previous frame's camera, for camera-cut detection
     double last_time_s_ = 0.0;
     bool has_last_view_ = false;

@@ -13,10 +13,10 @@
 namespace vista {
 
 void PostChain::resetHistory() {
-    auto_exposure_.reset();
-    dof_.reset();
-    motion_blur_.reset();
-    lens_flare_.reset();
+    auto_exposure_.release();
+    dof_.release();
+    motion_blur_.release();
+    lens_flare_.release();
     has_time_ = false;
     last_time_s_ = 0.0;
 }
@@ -33,7 +33,6 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
     TextureHandle image = hdr;
     bool display = false;  // after the tone map: RGBA8 sRGB-encoded
     ExposureInput exposure;
-    bool uses_auto = false, uses_dof = false, uses_motion_blur = false, uses_flare = false;
     TextureHandle debug_view;  // an effect's debug view replaces the display (later effects are culled)
     auto flush = [&] {
         if (exposure.pending) image = addExposureApplyPass(graph, rc, image, exposure);
@@ -51,11 +50,9 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 if (!s.exposure.enabled) break;
                 flush();
                 if (s.exposure.mode == ExposureMode::Auto) {
-                    if (!auto_exposure_) auto_exposure_ = std::make_unique<AutoExposure>();
                     // cd/m^2 per HDR unit of the light itself (the image holds it times the pre-exposure).
-                    exposure = auto_exposure_->addPasses(graph, rc, image, s.exposure, dt, reset,
-                                                         rc.cd_per_value * rc.pre_exposure);
-                    uses_auto = true;
+                    exposure = auto_exposure_.use().addPasses(graph, rc, image, s.exposure, dt, reset,
+                                                              rc.cd_per_value * rc.pre_exposure);
                 } else {
                     exposure = manualExposure(s.exposure);
                     exposure.manual /= float(rc.pre_exposure);  // a fixed exposure of the light itself
@@ -75,25 +72,19 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
             case PostEffect::Dof:
                 if (!s.dof.enabled || !depth.valid()) break;
                 flush();
-                if (!dof_) dof_ = std::make_unique<DepthOfField>();
-                image = dof_->addPasses(graph, rc, image, depth, s.dof, dt, reset);
-                uses_dof = true;
+                image = dof_.use().addPasses(graph, rc, image, depth, s.dof, dt, reset);
                 if (s.dof.debug) debug_view = image;
                 break;
             case PostEffect::MotionBlur:
                 if (!s.motion_blur.enabled || !depth.valid()) break;
                 flush();
-                if (!motion_blur_) motion_blur_ = std::make_unique<MotionBlur>();
-                image = motion_blur_->addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
-                uses_motion_blur = true;
+                image = motion_blur_.use().addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
                 break;
             case PostEffect::LensFlare:
                 if (!s.lens_flare.enabled || !depth.valid()) break;
                 flush();
-                if (!lens_flare_) lens_flare_ = std::make_unique<LensFlare>();
-                image = lens_flare_->addPasses(graph, rc, image, depth, s.lens_flare, rc.sun_direction,
-                                               rc.sun_illuminance * rc.sun_visibility, dt, reset);
-                uses_flare = true;
+                image = lens_flare_.use().addPasses(graph, rc, image, depth, s.lens_flare, rc.sun_direction,
+                                                    rc.sun_illuminance * rc.sun_visibility, dt, reset);
                 break;
             case PostEffect::Scotopic:
                 // Only on frames whose sky is dim enough to be pre-exposed (below 400 lx).
@@ -113,10 +104,11 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                 break;
         }
     }
-    if (!uses_auto) auto_exposure_.reset();  // a feature that is off keeps nothing
-    if (!uses_dof) dof_.reset();
-    if (!uses_motion_blur) motion_blur_.reset();
-    if (!uses_flare) lens_flare_.reset();
+    // An effect that is off keeps nothing.
+    auto_exposure_.releaseUnused();
+    dof_.releaseUnused();
+    motion_blur_.releaseUnused();
+    lens_flare_.releaseUnused();
     if (debug_view.valid()) return debug_view;
     if (!display) return addTonemapPass(graph, rc, image, Tonemapper::Clamp, 1.0f, exposure, "postfx.encode");
     flush();
@@ -124,8 +116,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
 }
 
 std::size_t PostChain::memoryBytes() const {
-    return (auto_exposure_ ? auto_exposure_->memoryBytes() : 0) + (dof_ ? dof_->memoryBytes() : 0) +
-           (lens_flare_ ? lens_flare_->memoryBytes() : 0) + lut_texture_.bytes();
+    return auto_exposure_.memoryBytes() + dof_.memoryBytes() + lens_flare_.memoryBytes() + lut_texture_.bytes();
 }
 
 InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& lut_file) {

@@ -12,6 +12,7 @@
 #include "postfx/grade.h"
 #include "postfx/lens_flare.h"
 #include "postfx/motion_blur.h"
+#include "renderer/feature_slot.h"
 #include "renderer/render_context.h"
 
 #include <filesystem>
@@ -50,10 +51,11 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    std::unique_ptr<AutoExposure> auto_exposure_;  // the adapted exposure, kept across frames
-    std::unique_ptr<DepthOfField> dof_;            // the autofocus state, kept across frames
-    std::unique_ptr<MotionBlur> motion_blur_;      // the previous frame's camera
-    std::unique_ptr<LensFlare> lens_flare_;        // the smoothed sun visibility
+    // Effects with state across frames, kept while they run (their bytes are postfx.memory_bytes).
+    FeatureSlot<AutoExposure> auto_exposure_{nullptr};  // the adapted exposure
+    FeatureSlot<DepthOfField> dof_{nullptr};            // the autofocus state
+    FeatureSlot<MotionBlur> motion_blur_{nullptr};      // the previous frame's camera
+    FeatureSlot<LensFlare> lens_flare_{nullptr};        // the smoothed sun visibility
     gl::Texture lut_texture_;                      // [postfx.grade] lut, while grading uses one
     GradeLut lut_;
     std::string lut_path_;                         // as given, to notice changes

@@ -117,6 +117,7 @@ public:
     // The same for the shadowed point lights' cubes (renderer/shadows/point_shadows.h).
     void setPointShadowSlots(const PointShadows& shadows);
     const LocalLightStats& stats() const { return stats_; }
+    std::size_t memoryBytes() const { return stats_.memory_bytes; }  // GPU buffers held
     // Forward passes (transparent surfaces) drawn after this frame's lights.cull: compile with
     // the define (LIGHTS_NAIVE, _TILED, _CLUSTERED or _HASHED), include
     // renderer/lighting/shaders/lights.glsl and call forwardLocalLights(); bind the buffers first. With

@@ -62,6 +62,7 @@ public:
     const std::vector<ShadowCascade>& cascades() const { return cascades_; }
     const LightBasis& light() const { return light_; }
     const SunShadowStats& stats() const { return stats_; }
+    std::size_t memoryBytes() const { return stats_.memory_bytes; }  // shadow map + uniforms
     GLuint mapTexture() const { return map_.id(); }
 
 private:

@@ -37,7 +37,7 @@ std::vector<ProgramKeyText> cloudPrograms() {
             {"sky/clouds/shaders/cloud_shadow.glsl", {}}};
 }
 
-void Clouds::releaseHistory(GlDevice& device) {
+void Clouds::release(GlDevice& device) {
     for (int i = 0; i < 2; ++i) {
         if (history_[i].id() != 0) device.destroyTexture(history_[i].id());
         if (history_distance_[i].id() != 0) device.destroyTexture(history_distance_[i].id());
@@ -89,7 +89,7 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     half_resolution_ = clouds.half_resolution;
     temporal_ = clouds.temporal && clouds.temporal_blend < 1.0f;
     temporal_blend_ = clouds.temporal_blend;
-    if (!temporal_) releaseHistory(rc.device);  // history off keeps nothing
+    if (!temporal_) release(rc.device);  // history off keeps nothing
     shadow_map_ = glm::vec4(float(rel.x), float(rel.y), float(1.0 / extent), float(slant));
     // Written while the graph is built: both passes of this frame read the same block.
     glNamedBufferSubData(uniforms_.id(), 0, sizeof g, &g);
@@ -213,7 +213,7 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
                                       TextureHandle distance, const TextureDesc& desc, bool cut) {
     const int w = desc.width, h = desc.height;
     if (history_[0].width() != w || history_[0].height() != h) {
-        releaseHistory(rc.device);
+        release(rc.device);
         for (int i = 0; i < 2; ++i) {
             history_[i] = gl::Texture::create2D(w, h, GL_RGBA16F, 1, "clouds.temporal history");
             history_distance_[i] = gl::Texture::create2D(w, h, GL_RG16F, 1, "clouds.temporal distance (km, frames)");

@@ -47,7 +47,7 @@ public:
                       bool cut = false);
     // Tells the device the history textures are going (it caches framebuffers by texture name)
     // and drops them; call before destroying this object.
-    void releaseHistory(GlDevice& device);
+    void release(GlDevice& device);
     // Drops the accumulated history (FrameRenderer::resetHistory).
     void resetHistory() { history_valid_ = false; }
     // Frames accumulated in the history at most (0: none yet), for the clouds.history_frames counter.
