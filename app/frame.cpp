@@ -558,6 +558,33 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     }
     // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
     const bool water = s.water.enabled && !shadow_view;
+    // Glass and other BLEND materials: the parts beyond the water plane from the eye before the
+    // sea (it refracts and absorbs them with the scene it copies), the rest over the sea; both
+    // before the aerial perspective fogs them (renderer/meshes/objects_forward.cpp).
+    const bool transparent = object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid();
+    ForwardLight forward;
+    if (transparent) {
+        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
+        forward.sun_irradiance = light.sun_irradiance;
+        forward.sky_up = light.sky_up;
+        forward.ground_up = light.ground_up;
+        if (local_lights) {
+            forward.lights_define = local_lights_->define();
+            forward.bind_lights = [this] { local_lights_->bindForForward(); };
+            forward.light_chunk = kLightChunk;
+            forward.light_chunks = local_lights_->chunks();
+        }
+        if (shadows.valid()) {
+            forward.sun_shadow_map = shadows.map;
+            forward.bind_sun_shadow = [shadows](GLuint map) { shadows.bind(map); };
+            forward.unbind_sun_shadow = &SunShadowInput::unbind;
+        }
+        objects_->sortTransparent(rc, s.objects, water ? double(s.water.level_m) : std::nan(""));
+        objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::BeyondWater);
+        report.counters["objects.transparent"] = double(objects_->transparentDrawn());
+        report.counters["objects.transparent_beyond_water"] = double(objects_->transparentBeyondWater());
+        report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
+    }
     if (water) {
         if (!water_) water_ = std::make_unique<Water>();
         const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
@@ -574,25 +601,12 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     } else if (!s.water.enabled) {
         water_.reset();  // a disabled feature keeps nothing allocated
     }
-    // Glass and other BLEND materials over the sea, before the aerial perspective fogs both.
-    if (object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
-        const SunAndSky light = sunAndSky(sky_lighting_.get(s.sky, view.position), s.sky);
-        ForwardLight forward;
-        forward.sun_irradiance = light.sun_irradiance;
-        forward.sky_up = light.sky_up;
-        forward.ground_up = light.ground_up;
-        if (local_lights) {
-            forward.lights_define = local_lights_->define();
-            forward.bind_lights = [this] { local_lights_->bindForForward(); };
-            forward.light_chunk = kLightChunk;
-            forward.light_chunks = local_lights_->chunks();
-        }
-        objects_->addTransparentPass(graph, rc, s.objects, forward, scene);
-        report.counters["objects.transparent"] = double(objects_->transparentDrawn());
-        report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
-    }
+    // The sky before the glass (which writes depth over it, so the sky is seen through a pane),
+    // the aerial perspective after it: the glass is fogged at its own distance.
+    if (!shadow_view && s.sky.enabled) sky_->addSkyPass(graph, rc, scene);
+    if (transparent) objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::EyeSide);
     if (!shadow_view && s.sky.enabled) {
-        sky_->addScenePasses(graph, rc, s.sky, scene);
+        sky_->addAerialPerspective(graph, rc, s.sky, scene);
         if (clouds) clouds_->addShellPass(graph, rc, *sky_, scene, cut);
     }
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
