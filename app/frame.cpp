@@ -607,6 +607,25 @@ void FrameRenderer::addLightingPasses(FrameGraph& graph, const Frame& f, const S
     if (s.debug.grid && !f.shadow_view) addGridPass(graph, f.rc, s.debug, s.sky, scene);
 }
 
+ForwardLight FrameRenderer::forwardLight(const Frame& f, const Shadows& shadows) {
+    ForwardLight forward;
+    forward.sun_irradiance = f.light.sun_irradiance;
+    forward.sky_up = f.light.sky_up;
+    forward.ground_up = f.light.ground_up;
+    if (f.local_lights) {
+        forward.lights_define = local_lights_->define();
+        forward.bind_lights = [this] { local_lights_->bindForForward(); };
+        forward.light_chunk = kLightChunk;
+        forward.light_chunks = local_lights_->chunks();
+    }
+    if (shadows.sun.valid()) {
+        forward.sun_shadow_map = shadows.sun.map;
+        forward.bind_sun_shadow = [sun = shadows.sun](GLuint map) { sun.bind(map); };
+        forward.unbind_sun_shadow = &SunShadowInput::unbind;
+    }
+    return forward;
+}
+
 void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f, const Casters& casters,
                                                const Shadows& shadows, SceneTargets& scene, const FrameRequest& request,
                                                FrameReport& report) {
@@ -616,6 +635,19 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
     else if (!f.shadow_view) sky_.use().addLutPasses(graph, rc, s.sky);
     // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
     const bool water = s.water.enabled && !f.shadow_view;
+    // Glass and other BLEND materials: the parts beyond the water plane from the eye before the
+    // sea (it refracts and absorbs them with the scene it copies), the rest over the sea; both
+    // before the aerial perspective fogs them (renderer/meshes/objects_forward.cpp).
+    const bool transparent = casters.object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid();
+    ForwardLight forward;
+    if (transparent) {
+        forward = forwardLight(f, shadows);
+        objects_->sortTransparent(rc, s.objects, water ? double(s.water.level_m) : std::nan(""));
+        objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::BeyondWater);
+        report.counters["objects.transparent"] = double(objects_->transparentDrawn());
+        report.counters["objects.transparent_beyond_water"] = double(objects_->transparentBeyondWater());
+        report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
+    }
     if (water) {
         Water& sea = water_.use();
         const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
@@ -631,24 +663,13 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
     } else if (!s.water.enabled) {
         water_.release();  // a disabled feature keeps nothing allocated
     }
-    // Glass and other BLEND materials over the sea, before the aerial perspective fogs both.
-    if (casters.object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid()) {
-        ForwardLight forward;
-        forward.sun_irradiance = f.light.sun_irradiance;
-        forward.sky_up = f.light.sky_up;
-        forward.ground_up = f.light.ground_up;
-        if (f.local_lights) {
-            forward.lights_define = local_lights_->define();
-            forward.bind_lights = [this] { local_lights_->bindForForward(); };
-            forward.light_chunk = kLightChunk;
-            forward.light_chunks = local_lights_->chunks();
-        }
-        objects_->addTransparentPass(graph, rc, s.objects, forward, scene);
-        report.counters["objects.transparent"] = double(objects_->transparentDrawn());
-        report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
-    }
-    if (!f.shadow_view && s.sky.enabled) {
-        sky_->addScenePasses(graph, rc, s.sky, scene);
+    // The sky before the glass (which writes depth over it, so the sky is seen through a pane),
+    // the aerial perspective after it: the glass is fogged at its own distance.
+    const bool sky = !f.shadow_view && s.sky.enabled;
+    if (sky) sky_->addSkyPass(graph, rc, scene);
+    if (transparent) objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::EyeSide);
+    if (sky) {
+        sky_->addAerialPerspective(graph, rc, s.sky, scene);
         if (f.clouds) clouds_->addShellPass(graph, rc, *sky_, scene, f.cut);
     }
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);

@@ -172,6 +172,8 @@ private:
     // the view under water, rain or snow.
     void addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f, const Casters& casters, const Shadows& shadows,
                                     SceneTargets& scene, const FrameRequest& request, FrameReport& report);
+    // What glass is lit by: the sun and sky, the local lights' forward lists, the sun's cascades.
+    ForwardLight forwardLight(const Frame& f, const Shadows& shadows);
     // Motion vectors and TAA (and the velocity readback a test asks for).
     void addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
                            FrameReport& report);

@@ -305,13 +305,20 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
 
 void SkyAtmosphere::addScenePasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky,
                                    SceneTargets& targets) {
+    addSkyPass(graph, rc, targets);
+    addAerialPerspective(graph, rc, sky, targets);
+}
+
+void SkyAtmosphere::addAerialPerspective(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky,
+                                         SceneTargets& targets) {
+    if (sky.aerial_perspective && targets.depth.valid())
+        addAerialPasses(graph, rc, *frame_u_, frame_in_space_, frame_transmittance_, frame_multiscatter_, targets);
+}
+
+void SkyAtmosphere::addSkyPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets) {
     const Uniforms& u = *frame_u_;
-    const bool in_space = frame_in_space_;
     const TextureHandle transmittance = frame_transmittance_, multiscatter = frame_multiscatter_,
                         sky_view = frame_sky_view_;
-    if (sky.aerial_perspective && targets.depth.valid())
-        addAerialPasses(graph, rc, u, in_space, transmittance, multiscatter, targets);
-
     struct Data {
         TextureHandle hdr, depth, transmittance, multiscatter, sky_view;
     };

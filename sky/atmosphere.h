@@ -60,8 +60,15 @@ public:
     // The LUT passes of this frame (those whose inputs changed) and this frame's atmosphere block.
     // Passes that read the LUTs before the sky is drawn (water.surface) go between the two calls.
     void addLutPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky);
-    // After addLutPasses() in the same graph: the aerial perspective and "sky.atmosphere".
+    // After addLutPasses() in the same graph: addSkyPass() then addAerialPerspective(). The two
+    // touch disjoint pixels (depth at infinity, finite depth), so their order changes nothing;
+    // the frame puts the transparent objects between them, which write depth over the sky.
     void addScenePasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
+    // "sky.atmosphere" over targets.hdr where targets.depth (if valid) is still at infinity.
+    void addSkyPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
+    // With aerial_perspective and a depth target: "sky.aerial_volume" (not from space) and
+    // "sky.aerial" where targets.depth > 0.
+    void addAerialPerspective(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
     // Forces every LUT to be rebuilt next frame (benchmarks).
     void invalidate();
     const SkyLutStats& stats() const { return stats_; }

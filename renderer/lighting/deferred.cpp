@@ -50,11 +50,7 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             if (data.shadow.valid()) {
                 defines.push_back("HAS_SUN_SHADOW");
                 if (debug == DebugView::Cascades) defines.push_back("SHADOW_CASCADE_VIEW");
-                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, shadows.uniforms);
-                glBindTextureUnit(binding::kShadowMap, ctx.texture(data.shadow));
-                glBindSampler(binding::kShadowMap, shadows.compare_sampler);
-                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.shadow));
-                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
+                shadows.bind(ctx.texture(data.shadow));
             }
             if (debug == DebugView::Shadow) defines.push_back("SHADOW_TERM_VIEW");
             glUseProgram(rc.shaders.get("renderer/lighting/shaders/sun.glsl", defines)->id());
@@ -73,10 +69,7 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             glBlendFunc(GL_ONE, GL_ONE);
             drawFullscreen(rc);
             glDisable(GL_BLEND);
-            if (data.shadow.valid()) {
-                glBindSampler(binding::kShadowMap, 0);
-                glBindSampler(binding::kShadowDepth, 0);
-            }
+            if (data.shadow.valid()) SunShadowInput::unbind();
         });
     targets.hdr = d.hdr;
 }

@@ -307,6 +307,42 @@ Model generateHouse() {
     return b.finish();
 }
 
+Model generateLantern() {
+    Builder b("lantern.glb");
+    ModelMaterial iron, glass;
+    iron.base_color = glm::vec4(0.04f, 0.04f, 0.045f, 1.0f);
+    iron.metallic = 0.8f;
+    iron.roughness = 0.5f;
+    glass.base_color = glm::vec4(0.9f, 0.8f, 0.6f, 0.2f);  // faintly amber, mostly clear
+    glass.metallic = 0.0f;
+    glass.roughness = 0.05f;
+    glass.emissive = glm::vec3(0.25f, 0.15f, 0.07f);  // the flame's glow in the glass; x [objects] emissive_nits
+    glass.alpha_mode = AlphaMode::Blend;
+    glass.double_sided = true;
+    const int i = b.material(iron), g = b.material(glass);
+    // The post up to the glass box, which holds the lamp at 2.5 m (light.lampN ground 2.5): the
+    // box is glass all round, which casts no shadow, so the lamp's light leaves it unshadowed
+    // except under the post and above the cap.
+    const float post = 2.1f, top = 2.85f, half = 0.17f;
+    tube(b, i, {0, -0.5f, 0}, {0, post, 0}, 0.06f, 0.04f, 8);
+    const glm::vec3 p00(-half, post, -half), p10(half, post, -half), p11(half, post, half), p01(-half, post, half);
+    const glm::vec3 up(0, top - post, 0);
+    b.quad(g, p01, p11, p11 + up, p01 + up);  // +z
+    b.quad(g, p10, p00, p00 + up, p10 + up);  // -z
+    b.quad(g, p11, p10, p10 + up, p11 + up);  // +x
+    b.quad(g, p00, p01, p01 + up, p00 + up);  // -x
+    b.quad(g, p00, p10, p11, p01);            // bottom
+    // An iron pyramid cap with a 3 cm overhang.
+    const float e = half + 0.03f, apex = top + 0.22f;
+    const glm::vec3 c00(-e, top, -e), c10(e, top, -e), c11(e, top, e), c01(-e, top, e), tip(0, apex, 0);
+    for (auto [a, c] : {std::pair{c01, c11}, std::pair{c11, c10}, std::pair{c10, c00}, std::pair{c00, c01}}) {
+        const glm::vec3 n = glm::normalize(glm::cross(c - a, tip - a));
+        b.tri(i, b.vertex(a, n, {0, 0}), b.vertex(c, n, {1, 0}), b.vertex(tip, n, {0.5f, 1}));
+    }
+    b.quad(i, c00, c01, c11, c10);  // underside
+    return b.finish();
+}
+
 std::string modelToGlb(const Model& model) {
     tinygltf::Model g;
     g.asset.version = "2.0";
@@ -407,7 +443,8 @@ int runGenProps(const std::filesystem::path& dir, std::uint32_t seed, bool force
         return 2;
     }
     const std::pair<const char*, Model> props[] = {
-        {"tree.glb", generateTree(seed)}, {"rock.glb", generateRock(seed)}, {"house.glb", generateHouse()}};
+        {"tree.glb", generateTree(seed)}, {"rock.glb", generateRock(seed)}, {"house.glb", generateHouse()},
+        {"lantern.glb", generateLantern()}};
     for (const auto& [name, model] : props)
         if (std::string why = checkOutputFile(dir / name, force, "--out"); !why.empty()) {
             std::fprintf(stderr, "vista: %s\n", why.c_str());

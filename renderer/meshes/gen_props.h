@@ -9,7 +9,10 @@
 //   rock.glb   a twice-subdivided icosahedron displaced by three octaves of hashed value noise
 //              and squashed vertically;
 //   house.glb  walls, a gable roof, a door, and windows with an emissive material (warm
-//              light) that glows into the HDR target at night.
+//              light) that glows into the HDR target at night;
+//   lantern.glb a lamp post with a glass lantern: four sides and a floor of faintly amber glass
+//              (BLEND, alpha 0.2, double-sided, a faint emissive glow) under an iron cap, for
+//              the village's door lamps (the point light sits inside the glass).
 // Deterministic: the same seed writes the same bytes. Each file is written atomically.
 #pragma once
 
@@ -25,12 +28,13 @@ namespace vista {
 Model generateTree(std::uint32_t seed);
 Model generateRock(std::uint32_t seed);
 Model generateHouse();
+Model generateLantern();
 
 // A model as binary glTF bytes (one buffer, one mesh with a primitive per material, images
 // embedded as PNG).
 std::string modelToGlb(const Model& model);
 
-// Writes tree.glb, rock.glb and house.glb into dir. Prints what was written and returns 0;
+// Writes tree.glb, rock.glb, house.glb and lantern.glb into dir. Prints what was written and returns 0;
 // 2 (with "vista: reason" on stderr) when dir is not a writable folder or a file exists
 // without force.
 int runGenProps(const std::filesystem::path& dir, std::uint32_t seed, bool force);

@@ -52,7 +52,8 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, GLenum 
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
-    return {{"renderer/meshes/shaders/object_cull.glsl", {}},
+    std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
+            {"renderer/meshes/shaders/object_cull.glsl", {}},
             {"renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"}},
             {"renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"}},
             {"renderer/meshes/shaders/object.glsl", {}},
@@ -60,17 +61,19 @@ std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
             {"renderer/meshes/shaders/object.glsl", {"IMPOSTOR_FADE"}},
             {"renderer/meshes/shaders/object.glsl", {"IMPOSTOR_FADE", "ALPHA_MASK"}},
             {"renderer/meshes/shaders/impostor.glsl", {}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_NAIVE"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_TILED"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_CLUSTERED"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_HASHED"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_NAIVE", "LIGHT_CHUNK"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_TILED", "LIGHT_CHUNK"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_CLUSTERED", "LIGHT_CHUNK"}},
-            {"renderer/meshes/shaders/object.glsl", {"FORWARD", "LIGHTS_HASHED", "LIGHT_CHUNK"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS", "ALPHA_MASK"}}};
+    // objects.transparent: unlit by local lights or each method, with the sun's shadows or not,
+    // and each method's further light chunks (objects_forward.cpp builds the same lists).
+    const char* forward = "renderer/meshes/shaders/object.glsl";
+    programs.push_back({forward, {"FORWARD"}});
+    programs.push_back({forward, {"FORWARD", "HAS_SUN_SHADOW"}});
+    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
+        programs.push_back({forward, {"FORWARD", method}});
+        programs.push_back({forward, {"FORWARD", method, "HAS_SUN_SHADOW"}});
+        programs.push_back({forward, {"FORWARD", method, "LIGHT_CHUNK"}});
+    }
+    return programs;
 }
 
 bool Objects::prepare(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area,

@@ -42,7 +42,17 @@ struct ForwardLight {
     // Each surface is shaded in light_chunks draws of light_chunk lights (LocalLights::chunks(),
     // kLightChunk): the blended one, then the rest added where its depth is equal.
     std::uint32_t light_chunk = 0, light_chunks = 1;
+    // The sun's cascades (renderer/shadows/sun_shadows.h SunShadowInput; invalid: unshadowed):
+    // the pass reads the map, bind_sun_shadow(map texture) binds it, its samplers and uniforms.
+    TextureHandle sun_shadow_map;
+    std::function<void(GLuint)> bind_sun_shadow;
+    std::function<void()> unbind_sun_shadow;
 };
+// Which BLEND surfaces a transparent pass draws when the sea is on. The sea refracts and absorbs
+// the scene it copies, so glass beyond the water plane (seen through the surface from the eye's
+// side) is drawn before "water.surface" into that scene, as an opaque object there is; glass on
+// the eye's side is drawn after it, over the sea. Each is clipped at the still surface level.
+enum class TransparentSide { BeyondWater, EyeSide };
 // Transparent (instance, primitive) pairs sorted and drawn per frame at most (the nearest).
 constexpr std::size_t kMaxTransparentItems = 4096;
 
@@ -94,13 +104,17 @@ public:
     // impostors can be drawn). Public for the tests.
     void bakeImpostors(const RenderContext& rc);
     bool impostorsBaked() const { return baked_; }
-    // "objects.transparent" (renderer/meshes/objects_forward.cpp): the BLEND primitives, sorted
-    // back to front per (instance, primitive), forward lit and blended into targets.hdr after the
-    // sea. Adds nothing when no model has one.
-    void addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, const ForwardLight& light,
-                            SceneTargets& targets);
+    // Sorts this frame's BLEND items (renderer/meshes/objects_forward.cpp) back to front per
+    // (instance, primitive) and uploads the lists; water_level_m: the sea's still surface (NaN:
+    // no sea, one list). Call once a frame before the passes.
+    void sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m);
+    // "objects.transparent" (EyeSide) and "objects.transparent_beyond_water": the sorted items of
+    // that side, forward lit and blended into targets.hdr. Adds nothing when the side has none.
+    void addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ForwardLight& light, SceneTargets& targets,
+                            TransparentSide side);
     bool hasTransparent() const { return !blend_.empty(); }
     std::size_t transparentDrawn() const { return transparent_drawn_; }      // this frame's sorted items
+    std::size_t transparentBeyondWater() const { return sides_[0].items.size(); }  // of them drawn before the sea
     std::size_t transparentDropped() const { return transparent_dropped_; }  // beyond kMaxTransparentItems
     void setSortTransparent(bool on) { sort_transparent_ = on; }  // tests: off draws in placement order
 
@@ -122,6 +136,7 @@ private:
         int model = 0;
         ModelPrimitive primitive;
         glm::vec3 centre{0.0f};  // model space, of the primitive's bounds
+        float low_y = 0.0f, high_y = 0.0f;  // model space, the bounds' lowest and highest y
         std::uint32_t first_instance = 0;  // the model's first instance in the upload order
     };
     void collectBlend();
@@ -155,7 +170,17 @@ private:
     std::vector<std::uint32_t> vertex_base_, index_base_;
     bool baked_ = false;
     std::vector<Blend> blend_;
-    gl::Buffer forward_list_;  // this frame's sorted instance indices
+    struct SortedItem {
+        std::uint32_t slot;  // in forward_list_ (the instance index is there)
+        int blend;
+    };
+    struct Side {
+        std::vector<SortedItem> items;  // back to front
+        glm::vec4 clip{0.0f};           // camera-relative plane: kept where dot(clip, (p, 1)) >= 0
+        bool clipped = false;
+    };
+    Side sides_[2];            // TransparentSide::BeyondWater, EyeSide
+    gl::Buffer forward_list_;  // this frame's sorted instance indices, both sides
     gl::Buffer near_list_;     // drawShadowNear's instance indices, per model
     std::vector<std::uint32_t> near_scratch_;
     bool sort_transparent_ = true;

@@ -4,6 +4,11 @@
 // reads, and blended premultiplied over what is behind. Sorting is per (instance, primitive) by
 // the distance of the primitive's centre, on the CPU: transparent parts are few (windows), and
 // the nearest kMaxTransparentItems are drawn, one draw each.
+// With the sea, the items are split at the still surface (gl_ClipDistance): what lies beyond the
+// water plane from the eye is drawn before the sea copies the scene, so the sea refracts and
+// absorbs it as it does an opaque object there; the rest after the sea, over it. Depth is written
+// like the sea's: the aerial perspective (and under water, the water's absorption) then treats
+// each pixel at the nearest glass's distance, the glass and what is seen through it alike.
 // Local lights past the first chunk (ForwardLight::light_chunks > 1: more lights than one shader
 // invocation may loop over on llvmpipe) are added to each item right after its blended draw, one
 // draw per chunk with depth test EQUAL (variant LIGHT_CHUNK: the light only, alpha 0). The blend
@@ -33,20 +38,22 @@ void Objects::collectBlend() {
                 lo = glm::min(lo, v);
                 hi = glm::max(hi, v);
             }
-            blend_.push_back({int(m), p, 0.5f * (lo + hi), first});
+            blend_.push_back({int(m), p, 0.5f * (lo + hi), lo.y, hi.y, first});
         }
         first += std::uint32_t(placed_[m].size());
     }
 }
 
-void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s,
-                                 const ForwardLight& light, SceneTargets& targets) {
+void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m) {
+    for (Side& side : sides_) side = Side{};
+    transparent_drawn_ = transparent_dropped_ = 0;
     if (blend_.empty()) return;
     // Back to front by the squared distance of each (instance, primitive) centre, in double.
     struct Item {
         double distance2;
         std::uint32_t instance;
         int blend;
+        double low_y, high_y;  // world
     };
     std::vector<Item> items;
     const double max2 = double(s.max_distance_m) * double(s.max_distance_m);
@@ -60,10 +67,11 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             const glm::dvec3 centre = p.position + glm::dvec3(c * q.x + sn * q.z, q.y, -sn * q.x + c * q.z);
             const glm::dvec3 d = centre - rc.view.position;
             const double d2 = glm::dot(d, d);
-            if (d2 <= max2) items.push_back({d2, bl.first_instance + std::uint32_t(j), int(b)});
+            if (d2 <= max2)
+                items.push_back({d2, bl.first_instance + std::uint32_t(j), int(b), p.position.y + double(bl.low_y) * double(p.scale),
+                                 p.position.y + double(bl.high_y) * double(p.scale)});
         }
     }
-    transparent_dropped_ = 0;
     if (items.size() > kMaxTransparentItems) {
         std::nth_element(items.begin(), items.begin() + kMaxTransparentItems, items.end(),
                          [](const Item& a, const Item& b) { return a.distance2 < b.distance2; });
@@ -74,21 +82,54 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
         std::stable_sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.distance2 > b.distance2; });
     transparent_drawn_ = items.size();
     if (items.empty()) return;
-    std::vector<std::uint32_t> order(items.size());
-    for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].instance;
-    if (forward_list_.size() < GLsizeiptr(order.size() * 4))
-        forward_list_ = gl::Buffer::create(GLsizeiptr(kMaxTransparentItems * 4), nullptr, GL_DYNAMIC_STORAGE_BIT, "objects transparent order");
-    glNamedBufferSubData(forward_list_.id(), 0, GLsizeiptr(order.size() * 4), order.data());
 
+    // The water plane: each side keeps the items reaching into it, clipped at the level.
+    const bool water = std::isfinite(water_level_m);
+    const double eye_above = rc.view.position.y - water_level_m;  // > 0: the eye above the water
+    const float sign = eye_above >= 0.0 ? 1.0f : -1.0f;
+    Side& beyond = sides_[std::size_t(TransparentSide::BeyondWater)];
+    Side& eye = sides_[std::size_t(TransparentSide::EyeSide)];
+    // Camera-relative p is at world height p.y + eye y: kept by the eye side where
+    // sign * (p.y + eye_above) >= 0, by the other where it is <= 0.
+    if (water) {
+        eye.clip = glm::vec4(0.0f, sign, 0.0f, sign * float(eye_above));
+        beyond.clip = -eye.clip;
+        eye.clipped = beyond.clipped = true;
+    }
+    std::vector<std::uint32_t> order;
+    order.reserve(2 * items.size());
+    for (int k : {0, 1}) {
+        Side& side = sides_[std::size_t(k)];
+        for (const Item& it : items) {
+            const bool above = it.high_y > water_level_m, below = it.low_y < water_level_m;
+            const bool on_eye_side = !water || (sign > 0.0f ? above : below);
+            const bool on_far_side = water && (sign > 0.0f ? below : above);
+            if (k == int(TransparentSide::BeyondWater) ? !on_far_side : !on_eye_side) continue;
+            side.items.push_back({std::uint32_t(order.size()), it.blend});
+            order.push_back(it.instance);
+        }
+    }
+    if (forward_list_.size() < GLsizeiptr(order.size() * 4))
+        forward_list_ = gl::Buffer::create(GLsizeiptr(2 * kMaxTransparentItems * 4), nullptr, GL_DYNAMIC_STORAGE_BIT,
+                                           "objects transparent order");
+    glNamedBufferSubData(forward_list_.id(), 0, GLsizeiptr(order.size() * 4), order.data());
+}
+
+void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ForwardLight& light, SceneTargets& targets,
+                                 TransparentSide which) {
+    const Side& side = sides_[std::size_t(which)];
+    if (side.items.empty()) return;
     struct Data {
-        TextureHandle hdr, depth;
+        TextureHandle hdr, depth, shadow;
     };
-    const Data& d = graph.addPass<Data>("objects.transparent",
+    const char* name = which == TransparentSide::EyeSide ? "objects.transparent" : "objects.transparent_beyond_water";
+    const Data& d = graph.addPass<Data>(name,
         [&](PassBuilder& b, Data& data) {
+            if (light.sun_shadow_map.valid()) data.shadow = b.read(light.sun_shadow_map);
             data.hdr = b.write(targets.hdr);
             data.depth = b.write(targets.depth);
         },
-        [this, &rc, light, items = std::move(items)](const Data& data, PassContext& ctx) {
+        [this, &rc, light, side](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
             glEnable(GL_DEPTH_TEST);
@@ -98,16 +139,24 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             glDepthMask(GL_TRUE);
             glEnable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            if (side.clipped) glEnable(GL_CLIP_DISTANCE0);
             std::vector<std::string> defines{"FORWARD"};
             if (!light.lights_define.empty()) defines.push_back(light.lights_define);
-            const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
             const bool lit = !light.lights_define.empty();
             const std::uint32_t chunks = lit ? std::max<std::uint32_t>(light.light_chunks, 1) : 1;
             GLuint chunk_program = 0;
             if (chunks > 1) {
-                defines.push_back("LIGHT_CHUNK");
-                chunk_program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+                std::vector<std::string> chunk_defines = defines;
+                chunk_defines.push_back("LIGHT_CHUNK");
+                chunk_program = rc.shaders.get("renderer/meshes/shaders/object.glsl", chunk_defines)->id();
             }
+            // The sun's cascades shade the glass as they shade the G-buffer (a variant; the local
+            // lights' further chunks need no sun).
+            if (data.shadow.valid()) {
+                defines.push_back("HAS_SUN_SHADOW");
+                light.bind_sun_shadow(ctx.texture(data.shadow));
+            }
+            const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
             glUseProgram(program);
             if (light.bind_lights) light.bind_lights();
             const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
@@ -115,6 +164,7 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                 if (p == 0) continue;
                 glProgramUniform3f(p, 1, camera.x, camera.y, camera.z);
                 glProgramUniformMatrix4fv(p, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
+                glProgramUniform4f(p, 11, side.clip.x, side.clip.y, side.clip.z, side.clip.w);
             }
             glProgramUniform3f(program, 7, light.sun_irradiance.r, light.sun_irradiance.g, light.sun_irradiance.b);
             glProgramUniform3f(program, 8, light.sky_up.r, light.sky_up.g, light.sky_up.b);
@@ -124,20 +174,20 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, forward_list_.id());
             for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
-            for (std::size_t i = 0; i < items.size(); ++i) {
-                const Blend& bl = blend_[std::size_t(items[i].blend)];
+            for (const SortedItem& item : side.items) {
+                const Blend& bl = blend_[std::size_t(item.blend)];
                 auto draw = [&] {
                     glDrawElementsInstancedBaseVertex(
                         GL_TRIANGLES, GLsizei(bl.primitive.index_count), GL_UNSIGNED_INT,
                         reinterpret_cast<const void*>(std::size_t(index_base_[std::size_t(bl.model)] + bl.primitive.first_index) * 4),
                         1, GLint(vertex_base_[std::size_t(bl.model)]));
                 };
-                glProgramUniform1ui(program, 0, GLuint(i));  // the instance is order[i]
+                glProgramUniform1ui(program, 0, GLuint(item.slot));  // the instance is forward_list_[slot]
                 setMaterial(program, bl.model, bl.primitive.material, emissive_nits_, false);
                 draw();
                 if (chunks == 1) continue;
                 glUseProgram(chunk_program);
-                glProgramUniform1ui(chunk_program, 0, GLuint(i));
+                glProgramUniform1ui(chunk_program, 0, GLuint(item.slot));
                 setMaterial(chunk_program, bl.model, bl.primitive.material, emissive_nits_, false);
                 glDepthFunc(GL_EQUAL);
                 glDepthMask(GL_FALSE);
@@ -150,7 +200,9 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                 glUseProgram(program);
             }
             for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
+            if (data.shadow.valid() && light.unbind_sun_shadow) light.unbind_sun_shadow();
             glBindVertexArray(rc.empty_vao);
+            glDisable(GL_CLIP_DISTANCE0);
             glDisable(GL_CULL_FACE);
             glDisable(GL_BLEND);
             glDisable(GL_DEPTH_TEST);

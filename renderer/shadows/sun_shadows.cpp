@@ -26,6 +26,19 @@ struct ShadowUniforms {
 
 }  // namespace
 
+void SunShadowInput::bind(GLuint map_texture) const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, uniforms);
+    glBindTextureUnit(binding::kShadowMap, map_texture);
+    glBindSampler(binding::kShadowMap, compare_sampler);
+    glBindTextureUnit(binding::kShadowDepth, map_texture);
+    glBindSampler(binding::kShadowDepth, depth_sampler);
+}
+
+void SunShadowInput::unbind() {
+    glBindSampler(binding::kShadowMap, 0);
+    glBindSampler(binding::kShadowDepth, 0);
+}
+
 bool sunCastsShadows(const ShadowSettings& s, const glm::dvec3& sun_dir) {
     return s.enabled && sun_dir.y > std::sin(glm::radians(double(s.min_sun_elevation_deg))) && sun_dir.y > 0.0;
 }

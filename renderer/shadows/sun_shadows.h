@@ -36,6 +36,10 @@ struct SunShadowInput {
     GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search)
     unsigned drawn = 0;          // bit c: cascade c had casters (the others' layers are stale)
     bool valid() const { return map.valid(); }
+    // Binds the uniforms and map (this pass's texture of `map`) with both samplers at the
+    // kShadow* bindings shadows.glsl reads; unbind() takes the samplers off again.
+    void bind(GLuint map_texture) const;
+    static void unbind();
 };
 
 // Whether the sun casts shadows with these settings (enabled and above min_sun_elevation_deg).

@@ -169,13 +169,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             glBindTextureUnit(binding::kTex0, ctx.texture(data.color));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.depth_copy));
             if (data.sky_view.valid()) glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));
-            if (data.shadow.valid()) {
-                glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, shadows.uniforms);
-                glBindTextureUnit(binding::kShadowMap, ctx.texture(data.shadow));
-                glBindSampler(binding::kShadowMap, shadows.compare_sampler);
-                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.shadow));
-                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
-            }
+            if (data.shadow.valid()) shadows.bind(ctx.texture(data.shadow));
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
@@ -204,10 +198,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             }
             glBindVertexArray(rc.empty_vao);
             glDisable(GL_DEPTH_TEST);
-            if (data.shadow.valid()) {
-                glBindSampler(binding::kShadowMap, 0);
-                glBindSampler(binding::kShadowDepth, 0);
-            }
+            if (data.shadow.valid()) SunShadowInput::unbind();
         });
     targets.hdr = d.hdr;
     targets.depth = d.depth;

@@ -11,6 +11,8 @@
 #include "renderer_fixture.h"
 #include "terrain/heightmap.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -318,8 +320,9 @@ namespace transparent_case {
 namespace {
 
 
-// A 2 x 2 m double-sided pane in the model's x-y plane, BLEND, the given colour at alpha 0.5.
-Model pane(glm::vec3 colour) {
+// A 2 x 2 m double-sided pane in the model's x-y plane (x -1..1, y 0..2), the given colour,
+// BLEND at alpha 0.5 or opaque.
+Model pane(glm::vec3 colour, AlphaMode mode = AlphaMode::Blend) {
     Model m;
     m.name = "pane";
     for (int c = 0; c < 4; ++c) {
@@ -331,10 +334,10 @@ Model pane(glm::vec3 colour) {
     }
     m.indices = {0, 1, 2, 0, 2, 3};
     ModelMaterial mat;
-    mat.base_color = glm::vec4(colour, 0.5f);
+    mat.base_color = glm::vec4(colour, mode == AlphaMode::Blend ? 0.5f : 1.0f);
     mat.metallic = 0.0f;
     mat.roughness = 0.8f;
-    mat.alpha_mode = AlphaMode::Blend;
+    mat.alpha_mode = mode;
     mat.double_sided = true;
     m.materials = {mat};
     m.lods = {ModelLod{{ModelPrimitive{0, 6, 0}}}};
@@ -412,6 +415,265 @@ TEST_CASE("gl: transparent panes are sorted back to front: either listed order r
     const test::RenderedFrame unsorted = render(front_first, view);
     test::compiledFileRenderer().objects()->setSortTransparent(true);
     CHECK(differing(a.rgba, unsorted.rgba) > 20);
+}
+
+// Compositing with the sea, the fog and the sun's shadows. Every expectation is built from other
+// renders of the same pixels, by the linear algebra of the blend:
+//  - premultiplied blending: pixel = C + (1 - a) B, C the pane's own light, B what is behind;
+//  - the sea, the aerial perspective and the shadows act on what they cover linearly per pixel,
+//    pixel = k X + m; two opaque panes of different colours at the same place give k and m.
+namespace {
+
+// RGB of the pixel world projects to (rows top first), for each point.
+std::vector<glm::vec3> pixelsAt(const test::RenderedFrame& f, const ViewParams& view, const std::vector<glm::dvec3>& points) {
+    const ViewMatrices m = viewMatrices(view);
+    std::vector<glm::vec3> out;
+    for (const glm::dvec3& world : points) {
+        const glm::vec4 c = m.view_proj * glm::vec4(glm::vec3(world - view.position), 1.0f);
+        const int px = int((c.x / c.w * 0.5f + 0.5f) * float(view.width));
+        const int py = view.height - 1 - int((c.y / c.w * 0.5f + 0.5f) * float(view.height));
+        REQUIRE(px >= 0);
+        REQUIRE(px < view.width);
+        REQUIRE(py >= 0);
+        REQUIRE(py < view.height);
+        const std::size_t i = (std::size_t(py) * std::size_t(view.width) + std::size_t(px)) * 4;
+        out.emplace_back(f.rgba[i], f.rgba[i + 1], f.rgba[i + 2]);
+    }
+    return out;
+}
+
+// Points on a pane standing at centre (its bottom middle), scaled, turned by yaw (deg): u across
+// (-1..1), v up (0..2) in the model's units, over [u0, u1] x [v0, v1].
+std::vector<glm::dvec3> paneGrid(glm::dvec3 centre, double scale, double yaw_deg, double u0, double u1, double v0, double v1) {
+    const double c = std::cos(glm::radians(yaw_deg)), sn = std::sin(glm::radians(yaw_deg));
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j <= 4; ++j) {
+            const double u = (u0 + (u1 - u0) * i / 4.0) * scale, v = (v0 + (v1 - v0) * j / 4.0) * scale;
+            points.push_back(centre + glm::dvec3(c * u, v, -sn * u));
+        }
+    return points;
+}
+
+// sum |a - b| / sum |b| over every channel.
+double relativeError(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+    REQUIRE(a.size() == b.size());
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            num += std::abs(double(a[i][k]) - double(b[i][k]));
+            den += std::abs(double(b[i][k]));
+        }
+    return num / std::max(den, 1e-12);
+}
+
+// k X + m per pixel and channel, with k and m from two opaque references: y_a = k x_a + m and
+// y_b = k x_b + m (x without the effect, y with it).
+std::vector<glm::vec3> linearPrediction(const std::vector<glm::vec3>& x, const std::vector<glm::vec3>& x_a,
+                                        const std::vector<glm::vec3>& x_b, const std::vector<glm::vec3>& y_a,
+                                        const std::vector<glm::vec3>& y_b) {
+    std::vector<glm::vec3> out(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            REQUIRE(std::abs(x_a[i][k] - x_b[i][k]) > 1e-3f * (std::abs(x_a[i][k]) + 1e-6f));
+            const float slope = (y_a[i][k] - y_b[i][k]) / (x_a[i][k] - x_b[i][k]);
+            out[i][k] = slope * x[i][k] + (y_a[i][k] - slope * x_a[i][k]);
+        }
+    return out;
+}
+
+ObjectInstanceSpec placed(const std::filesystem::path& file, glm::dvec3 position, float scale, float yaw_deg = 0.0f,
+                          float ground_m = -1.0f) {
+    ObjectInstanceSpec o;
+    o.file = file.string();
+    o.position = position;
+    o.scale = scale;
+    o.yaw_deg = yaw_deg;
+    o.ground_m = ground_m;
+    return o;
+}
+
+struct PaneFiles {
+    test::TempDir dir{"pane_compositing"};
+    std::filesystem::path flat = dir.path / "flat.png", red = dir.path / "red.glb", light = dir.path / "light.glb",
+                          dark = dir.path / "dark.glb", grey = dir.path / "grey.glb";
+    PaneFiles() {
+        Heightmap map{65, 65, std::vector<float>(65 * 65, kFlat)};
+        REQUIRE(saveHeightmapPng16(flat, map).empty());
+        REQUIRE(writeFileAtomic(red, modelToGlb(pane({0.9f, 0.05f, 0.05f})), true).empty());
+        REQUIRE(writeFileAtomic(light, modelToGlb(pane({0.8f, 0.7f, 0.6f}, AlphaMode::Opaque)), true).empty());
+        REQUIRE(writeFileAtomic(dark, modelToGlb(pane({0.1f, 0.15f, 0.2f}, AlphaMode::Opaque)), true).empty());
+        REQUIRE(writeFileAtomic(grey, modelToGlb(pane({0.4f, 0.4f, 0.4f}, AlphaMode::Opaque)), true).empty());
+    }
+};
+
+// The flat island 10 m under a calm sea (no waves, foam or screen-space reflection, so the sea
+// acts on each pixel alone).
+Settings seaScene(const std::filesystem::path& map) {
+    Settings s = paneScene(map);
+    s.water.enabled = true;
+    s.water.level_m = float(kFlat * kHeightScale) + 10.0f;
+    s.water.amplitude_scale = 0.0f;
+    s.water.foam_depth_m = 0.0f;
+    s.water.whitecaps = 0.0f;
+    s.water.reflection = WaterReflection::Sky;
+    return s;
+}
+
+Settings withObjects(Settings s, std::vector<NamedObject> objects) {
+    s.objects.objects = std::move(objects);
+    s.objects.enabled = !s.objects.objects.empty();
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("gl: a transparent pane in front of the sea blends over the sea surface") {
+    PaneFiles files;
+    const Settings sea = seaScene(files.flat);
+    Settings dry = sea;
+    dry.water.enabled = false;
+    const double level = double(sea.water.level_m);
+    const glm::dvec3 base(0.0, level + 1.0, -8.0);  // floating 1 m above the water, 8 m ahead
+    const ViewParams view{{0.0, level + 4.0, 0.0}, 0.0, -14.0, 40.0, 0.1f, 160, 90};
+    const NamedObject pane{"pane", placed(files.red, base, 1.0f)};
+    const auto points = paneGrid(base, 1.0, 0.0, -0.7, 0.7, 0.3, 1.7);
+
+    const auto sea_empty = pixelsAt(render(withObjects(sea, {}), view), view, points);
+    const test::RenderedFrame sea_frame = render(withObjects(sea, {pane}), view);
+    const auto sea_pane = pixelsAt(sea_frame, view, points);
+    const auto dry_empty = pixelsAt(render(withObjects(dry, {}), view), view, points);
+    const auto dry_pane = pixelsAt(render(withObjects(dry, {pane}), view), view, points);
+    CHECK(sea_frame.report.counters.at("objects.transparent") == 1.0);
+    CHECK(sea_frame.report.counters.at("objects.transparent_beyond_water") == 0.0);  // all above the water
+    CHECK(relativeError(sea_empty, dry_empty) > 0.2);  // the sea is not the ground under it
+    CHECK(relativeError(dry_pane, dry_empty) > 0.2);   // the pane shows
+
+    // The pane's own light C = dry_pane - (1 - a) dry_empty; over the sea: C + (1 - a) sea.
+    std::vector<glm::vec3> expected(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) expected[i] = dry_pane[i] - 0.5f * dry_empty[i] + 0.5f * sea_empty[i];
+    const double error = relativeError(sea_pane, expected);
+    INFO("relative error " << error);
+    CHECK(error < 0.02);
+}
+
+TEST_CASE("gl: a transparent pane partly under the sea is seen through the water as an opaque pane there would be") {
+    PaneFiles files;
+    const Settings sea = seaScene(files.flat);
+    Settings dry = sea;
+    dry.water.enabled = false;
+    const double level = double(sea.water.level_m);
+    const glm::dvec3 base(0.0, level - 2.0, -10.0);  // 4 m tall: half under the water
+    const ViewParams view{{0.0, level + 4.0, 0.0}, 0.0, -21.8, 50.0, 0.1f, 160, 90};
+    auto with = [&](const Settings& s, const std::filesystem::path& file) {
+        return withObjects(s, {{"pane", placed(file, base, 2.0f)}});
+    };
+    const auto under = paneGrid(base, 2.0, 0.0, -0.8, 0.8, 0.15, 0.75);  // 0.5 to 1.7 m under the water
+
+    const test::RenderedFrame wet_frame = render(with(sea, files.red), view);
+    CHECK(wet_frame.report.counters.at("objects.transparent_beyond_water") == 1.0);
+    CHECK(std::find(wet_frame.report.executed.begin(), wet_frame.report.executed.end(), "objects.transparent_beyond_water") !=
+          wet_frame.report.executed.end());
+    const auto wet = pixelsAt(wet_frame, view, under);
+    const auto wet_a = pixelsAt(render(with(sea, files.light), view), view, under);
+    const auto wet_b = pixelsAt(render(with(sea, files.dark), view), view, under);
+    const auto x = pixelsAt(render(with(dry, files.red), view), view, under);
+    const auto x_a = pixelsAt(render(with(dry, files.light), view), view, under);
+    const auto x_b = pixelsAt(render(with(dry, files.dark), view), view, under);
+    CHECK(relativeError(wet_a, x_a) > 0.2);  // the water changes what is under it
+    // The sea maps what it covers at each pixel linearly (refraction, absorption over the water
+    // to the pane, scattering): the two opaque panes give that map, the glass must follow it.
+    const double error = relativeError(wet, linearPrediction(x, x_a, x_b, wet_a, wet_b));
+    INFO("relative error " << error);
+    CHECK(error < 0.03);
+}
+
+TEST_CASE("gl: a distant transparent pane is fogged like an opaque pane at the same distance") {
+    PaneFiles files;
+    Settings fog = paneScene(files.flat);
+    fog.sky.enabled = true;
+    fog.clouds.enabled = false;
+    fog.sky.height_fog = true;
+    fog.sky.fog_density_per_km = 4.0f;  // about 0.3 transmittance over 300 m
+    Settings clear = fog;
+    clear.sky.aerial_perspective = false;
+    const double ground = kFlat * kHeightScale;
+    const glm::dvec3 base(0.0, ground, -300.0);
+    // A grey wall 2 m behind the panes: what is seen through the glass is at the glass's distance
+    // too, so the expectation holds whether the blend fogs the background at its own distance or
+    // at the glass's.
+    const NamedObject wall{"wall", placed(files.grey, base + glm::dvec3(0, 0, -2), 30.0f)};
+    auto with = [&](const Settings& s) { return withObjects(s, {{"pane", placed(files.red, base, 20.0f)}, wall}); };
+    auto opaque = [&](const Settings& s, const std::filesystem::path& file) {
+        return withObjects(s, {{"pane", placed(file, base, 20.0f)}, wall});
+    };
+    const ViewParams view{{0.0, ground + 20.0, 0.0}, 0.0, 0.0, 20.0, 0.1f, 160, 90};
+    const auto points = paneGrid(base, 20.0, 0.0, -0.7, 0.7, 0.3, 1.7);
+
+    const auto y = pixelsAt(render(with(fog), view), view, points);
+    const auto y_a = pixelsAt(render(opaque(fog, files.light), view), view, points);
+    const auto y_b = pixelsAt(render(opaque(fog, files.dark), view), view, points);
+    const auto x = pixelsAt(render(with(clear), view), view, points);
+    const auto x_a = pixelsAt(render(opaque(clear, files.light), view), view, points);
+    const auto x_b = pixelsAt(render(opaque(clear, files.dark), view), view, points);
+    // The fog is strong there: the opaque panes' difference keeps under 0.8 of itself.
+    double kept = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) kept += double(y_a[i].g - y_b[i].g) / double(x_a[i].g - x_b[i].g);
+    kept /= double(points.size());
+    INFO("transmittance " << kept);
+    CHECK(kept < 0.8);
+    CHECK(kept > 0.05);
+    const double error = relativeError(y, linearPrediction(x, x_a, x_b, y_a, y_b));
+    INFO("relative error " << error);
+    CHECK(error < 0.03);
+}
+
+TEST_CASE("gl: a transparent pane half in a pillar's sun shadow is darker there by the share the sun gives an opaque pane") {
+    PaneFiles files;
+    Settings s = paneScene(test::pillarHeightmap("pane_shadow"));
+    s.terrain.size_m = 256.0f;
+    s.terrain.height_scale_m = 40.0f;
+    s.sky.enabled = true;
+    s.sky.aerial_perspective = false;  // the shadow alone acts on the glass
+    s.clouds.enabled = false;
+    s.sky.sun_azimuth_deg = 90.0f;  // east: the pillar's shadow falls towards -x over |z| < 4 m
+    s.sky.sun_elevation_deg = 45.0f;
+    s.shadows.enabled = true;
+    Settings unshadowed = s;
+    unshadowed.shadows.enabled = false;
+    // Turned 45 degrees towards the sun; across it from z = -2.7 (in the shadow) to -8.3 m (lit),
+    // seen from 11 m along its normal.
+    const glm::dvec3 base(-15.0, 0.0, -5.5);
+    const ViewParams view{{-7.0, 4.5, 2.5}, -45.0, 0.0, 40.0, 0.1f, 160, 90};
+    auto with = [&](const Settings& settings, const std::filesystem::path& file) {
+        return withObjects(settings, {{"pane", placed(file, base, 4.0f, 45.0f, 0.5f)}});
+    };
+    const glm::dvec3 standing = base + glm::dvec3(0.0, 0.5, 0.0);
+    const auto shaded = paneGrid(standing, 4.0, 45.0, -0.9, -0.6, 0.3, 1.3);
+    const auto lit = paneGrid(standing, 4.0, 45.0, 0.6, 0.9, 0.3, 1.3);
+
+    // The glass's own light C = P - (1 - a) B (B: the same view without it), summed over an area.
+    auto own = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
+        const test::RenderedFrame p = render(with(settings, files.red), view), b = render(withObjects(settings, {}), view);
+        const auto pp = pixelsAt(p, view, points), bb = pixelsAt(b, view, points);
+        glm::dvec3 sum(0.0);
+        for (std::size_t i = 0; i < pp.size(); ++i) sum += glm::dvec3(pp[i] - 0.5f * bb[i]);
+        return sum;
+    };
+    auto opaque = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
+        const auto pp = pixelsAt(render(with(settings, files.light), view), view, points);
+        glm::dvec3 sum(0.0);
+        for (const glm::vec3& v : pp) sum += glm::dvec3(v);
+        return sum;
+    };
+    const glm::dvec3 glass_shaded = own(s, shaded), glass_lit = own(s, lit);
+    const glm::dvec3 glass_shaded_off = own(unshadowed, shaded), glass_lit_off = own(unshadowed, lit);
+    const double ratio = glass_shaded.r / glass_shaded_off.r;
+    const double expected = opaque(s, shaded).r / opaque(unshadowed, shaded).r;
+    INFO("glass in the shadow keeps " << ratio << ", an opaque pane " << expected);
+    CHECK(glass_lit.r == doctest::Approx(glass_lit_off.r).epsilon(0.03));  // the lit half is as without shadows
+    CHECK(expected < 0.7);                                                 // the shadow is there
+    CHECK(ratio == doctest::Approx(expected).epsilon(0.08));
 }
 
 }  // namespace transparent_case

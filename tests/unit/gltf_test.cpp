@@ -188,7 +188,7 @@ TEST_CASE("gltf: external buffers load from the model's folder, .glb round trip 
     CHECK(loadGltf(dir / "tri.gltf", m) == "");
     CHECK(m.vertices.size() == 3);
 
-    for (const Model& prop : {generateTree(1), generateRock(1), generateHouse()}) {
+    for (const Model& prop : {generateTree(1), generateRock(1), generateHouse(), generateLantern()}) {
         CAPTURE(prop.name);
         Model back;
         REQUIRE(loadGltfFromMemory(modelToGlb(prop), "", prop.name, back) == "");
@@ -210,8 +210,8 @@ TEST_CASE("gltf: external buffers load from the model's folder, .glb round trip 
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("gltf: props have what the scene needs: leaf cards masked, windows emissive, sizes") {
-    const Model tree = generateTree(1), house = generateHouse(), rock = generateRock(1);
+TEST_CASE("gltf: props have what the scene needs: leaf cards masked, windows emissive, lantern glass blended, sizes") {
+    const Model tree = generateTree(1), house = generateHouse(), rock = generateRock(1), lantern = generateLantern();
     bool mask = false, emissive = false;
     for (const ModelMaterial& mat : tree.materials) mask |= mat.alpha_mode == AlphaMode::Mask && mat.double_sided && mat.base_color_texture == 0;
     for (const ModelMaterial& mat : house.materials) emissive |= mat.emissive.r > 0.5f;
@@ -221,6 +221,19 @@ TEST_CASE("gltf: props have what the scene needs: leaf cards masked, windows emi
     CHECK(tree.bounds_max.y < 20.0f);
     CHECK(house.bounds_max.y == doctest::Approx(5.6f));
     CHECK(rock.bounds_max.y < 1.0f);
+    // The lantern's glass is blended, double-sided and see-through around the lamp's 2.5 m; the
+    // rest is opaque.
+    int blended = 0;
+    for (const ModelMaterial& mat : lantern.materials)
+        if (mat.alpha_mode == AlphaMode::Blend) {
+            ++blended;
+            CHECK(mat.double_sided);
+            CHECK(mat.base_color.a < 0.5f);
+        }
+    CHECK(blended == 1);
+    CHECK(lantern.materials.size() == 2);
+    CHECK(lantern.bounds_max.y > 2.5f);
+    CHECK(lantern.bounds_max.y < 3.5f);
     // The leaf texture has both holes and leaves (what the alpha test cuts).
     int holes = 0, leaves = 0;
     for (std::size_t p = 3; p < tree.images[0].rgba.size(); p += 4) (tree.images[0].rgba[p] ? leaves : holes)++;

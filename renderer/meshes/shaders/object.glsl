@@ -14,7 +14,10 @@
 // _HASHED, as the sea), written premultiplied (blend ONE, ONE_MINUS_SRC_ALPHA); u_light_chunk is
 // the part of each light range it shades. FORWARD + LIGHT_CHUNK: a further chunk of the local
 // lights only, alpha 0, drawn right after the item with depth test EQUAL (objects_forward.cpp);
-// gl_Position is invariant in the FORWARD variants so the two draws' depths are equal.
+// gl_Position is invariant in the FORWARD variants so the two draws' depths are equal. FORWARD
+// writes gl_ClipDistance[0] = dot(u_clip, (p, 1)) (the pass enables it only with the sea: the
+// water plane splits the glass drawn before and after the sea). FORWARD + HAS_SUN_SHADOW: the
+// sun's cascades shadow the glass as they shadow the G-buffer.
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "object_common.glsl"
@@ -33,6 +36,7 @@ layout(location = 7) uniform vec3 u_sun_irradiance;  // FORWARD: the sun at norm
 layout(location = 8) uniform vec3 u_sky_up;          // FORWARD: sky irradiance on an up-facing surface
 layout(location = 9) uniform vec3 u_ground_up;       // FORWARD: ground bounce on a down-facing surface
 layout(location = 10) uniform uvec2 u_light_chunk;   // FORWARD with lights: this draw's chunk of each light range (lights.glsl chunkOf)
+layout(location = 11) uniform vec4 u_clip;           // FORWARD: camera-relative plane, kept where dot(u_clip, (p, 1)) >= 0
 layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
 
 #ifdef VERTEX_SHADER
@@ -70,6 +74,9 @@ void main() {
     v_fade = impostorFade(length(centre), u_fade.xy);
 #endif
     gl_Position = u_matrix * vec4(p, 1.0);
+#ifdef FORWARD
+    gl_ClipDistance[0] = dot(u_clip, vec4(p, 1.0));
+#endif
 }
 #endif
 
@@ -81,6 +88,9 @@ void main() {
 #if defined(FORWARD) && (defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED))
 #define OBJECT_LOCAL_LIGHTS
 #include "../../../renderer/lighting/shaders/lights.glsl"
+#endif
+#if defined(FORWARD) && defined(HAS_SUN_SHADOW)
+#include "../../../renderer/shadows/shaders/shadows.glsl"
 #endif
 layout(binding = BINDING_TEX_0) uniform sampler2D t_base_color;
 in vec2 v_uv;
@@ -126,6 +136,14 @@ void main() {
     if (base.a < u_emissive.w) discard;
 #endif
     vec3 n = safeNormalize(gl_FrontFacing ? v_normal : -v_normal);
+#if defined(FORWARD) && defined(HAS_SUN_SHADOW) && !defined(LIGHT_CHUNK)
+    // The sun's visibility at the surface itself (its face normal offsets the lookup).
+    float sun_visible = 1.0;
+    if (dot(n, u_sun_dir.xyz) > 0.0)
+        sun_visible = sunShadow(v_position, n, dot(n, u_sun_dir.xyz), max(-(mat3(u_view) * v_position).z, 0.0), gl_FragCoord.xy);
+#else
+    const float sun_visible = 1.0;
+#endif
     // Tangent frame: the vertex tangent, or one from screen derivatives where the mesh has none.
     vec3 t = v_tangent.xyz;
     float handed = v_tangent.w;
@@ -164,7 +182,7 @@ void main() {
     o_color = vec4(shadeRange(range, s, v_position, v, exact), 0.0);
 #else
     vec3 l = u_sun_dir.xyz;
-    vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, n, l, v) * u_sun_irradiance * max(dot(n, l), 0.0);
+    vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, n, l, v) * u_sun_irradiance * (sun_visible * max(dot(n, l), 0.0));
     float nv = clamp(dot(n, v), 0.0, 1.0);
     float fr = s.f0 + (1.0 - s.f0) * pow(1.0 - nv, 5.0) * (1.0 - s.roughness);
     vec3 r = reflect(-v, n);
