@@ -79,9 +79,14 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
     if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
     defines.push_back("MATERIAL_LAYERS=" + std::to_string(kMaxMaterialLayers));
     // Splat maps place the layers instead of the height/slope rules (user_materials.h).
-    if (const std::size_t images = splatFiles(s).size(); images > 0)
-        defines.push_back("TERRAIN_SPLAT=" + std::to_string(std::min<std::size_t>(images, kMaxSplatImages)));
+    for (std::string& d : splatDefines(s)) defines.push_back(std::move(d));
     return defines;
+}
+
+std::vector<std::string> splatDefines(const TerrainSettings& s) {
+    if (const std::size_t images = splatFiles(s).size(); images > 0)
+        return {"TERRAIN_SPLAT=" + std::to_string(std::min<std::size_t>(images, kMaxSplatImages))};
+    return {};
 }
 
 std::vector<std::string> terrainTessDefines(const TerrainSettings& s) {
@@ -430,6 +435,12 @@ void Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance
     appendInstances(culled_.nodes, out);
 }
 
+void Terrain::bindSplat(GLuint program, GLint location) const {
+    if (splat_images_ == 0) return;
+    glBindTextureUnit(binding::kTex5, splat_.id());
+    glProgramUniform4iv(program, location, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
+}
+
 void Terrain::bindTiles(GLuint program, GLint location) const {
     glProgramUniform4i(program, location, tiles_.count.x, tiles_.count.y, tiles_.span, 0);
     glProgramUniform4f(program, location + 1, float(tiles_.layer.x), float(tiles_.layer.y), float(map_.width),
@@ -485,7 +496,6 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
-    if (splat_images_ > 0) glBindTextureUnit(binding::kTex5, splat_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
     // Texture coordinates per metre of each layer: a user material's tiling_m, else texture_scale_m
     // (the generated rock at half that scale: its strata want the larger repeat).
@@ -517,8 +527,7 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
             glProgramUniform4fv(program, 32, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
             glProgramUniform1fv(program, 40, GLsizei(layer_scale.size()), layer_scale.data());
             // Only TERRAIN_SPLAT programs declare it (a location no uniform holds is a GL error).
-            if (splat_images_ > 0 && !s.splat_map.empty())
-                glProgramUniform4iv(program, 48, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
+            if (!s.splat_map.empty()) bindSplat(program, 48);
             if (tier == 0 && s.pom.enabled && pass == 1) {
                 // The relief is gone where the near tier ends (the other tiers have no POM variant).
                 const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);

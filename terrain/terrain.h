@@ -132,6 +132,9 @@ public:
     GLuint albedoTexture() const { return albedo_.id(); }    // material albedo array (sRGB, A = roughness)
     // Sets the tile uniforms (ivec4 count.xy, span; vec4 layer.xy, map size) at location, location + 1.
     void bindTiles(GLuint program, GLint location) const;
+    // With a splat map: binds its weights to BINDING_TEX_5 and sets the layer of each channel
+    // (ivec4[2], material.glsl splatWeightsAt) at location, location + 1 (programs with splatDefines()).
+    void bindSplat(GLuint program, GLint location) const;
 
 private:
     Terrain() = default;
@@ -199,6 +202,9 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
 // The G-buffer program's defines for a material tier (0 near .. 2 far) and the settings' debug
 // view and wireframe (terrain.glsl: debug views are variants, so the shaded image pays nothing).
 std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier);
+// TERRAIN_SPLAT=images when a splat map places the layers (material.glsl splatWeightsAt): the
+// terrain's programs and the grass cull's, so blades grow where the splat map puts grass.
+std::vector<std::string> splatDefines(const TerrainSettings& s);
 // The tessellated near tier's program defines (terrain_tess.glsl), and its shadow program's.
 std::vector<std::string> terrainTessDefines(const TerrainSettings& s);
 // Material tier of a quadrant whose box is distance_m from the camera at its nearest.
