@@ -574,8 +574,12 @@ void FrameRenderer::addGeometryPasses(FrameGraph& graph, const Frame& f, const C
         report.counters["terrain.tier_near"] = double(c.tier_instances[0]);
         report.counters["terrain.tier_mid"] = double(c.tier_instances[1]);
         report.counters["terrain.tier_far"] = double(c.tier_instances[2]);
-        // Grid triangles drawn as tessellation patches ([terrain.tessellation]; absent when off).
-        if (s.terrain.tessellation.enabled) report.counters["terrain.tess_patches"] = double(c.tess_patches);
+        // Grid triangles drawn as tessellation patches ([terrain.tessellation]; absent when off): in
+        // the view, and in the shadow passes (sun cascades, spot tiles, point cube faces) together.
+        if (s.terrain.tessellation.enabled) {
+            report.counters["terrain.tess_patches"] = double(c.tess_patches);
+            report.counters["terrain.tess_shadow_patches"] = double(c.tess_shadow_patches);
+        }
         report.counters["terrain.select_ms"] = c.select_ms;
     }
     if (casters.blades.valid()) grass_->addGbufferPass(graph, f.rc, s.grass, casters.blades, scene);

@@ -144,7 +144,7 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"range_m", "m", "quadrants nearer than this are tessellated; the displacement fades out by 90% of it"}, t.range_m,
             2.0f, 1000.0f);
     v.field({"edge_px", "px", "target length of a tessellated edge on screen"}, t.edge_px, 1.0f, 64.0f);
-    v.field({"max_factor", "", "largest subdivision of an edge"}, t.max_factor, 1.0f, 64.0f);
+    v.field({"max_factor", "", "largest subdivision of an edge"}, t.max_factor, 1.0f, 32.0f);
     v.field({"depth_m", "m", "depth of relief height 0 below the drawn surface"}, t.depth_m, 0.001f, 1.0f);
     for (TerrainMaterialSettings& m : s.materials) {
         v.section(m.section.c_str(), "a user material: images of one square power-of-two size; NAME sand, grass, rock, "

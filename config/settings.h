@@ -88,7 +88,7 @@ struct TerrainTessSettings {
     bool enabled = false;             //!< tessellate and displace the quadrants nearer than range_m
     float range_m = 40.0f;            //!< m, quadrants nearer than this are tessellated; displacement ends by 90% of it, 2..1000
     float edge_px = 6.0f;             //!< px, target length of a tessellated edge on screen, 1..64
-    float max_factor = 16.0f;         //!< largest subdivision of an edge, 1..64
+    float max_factor = 16.0f;         //!< largest subdivision of an edge (llvmpipe's tessellator breaks beyond 32), 1..32
     float depth_m = 0.1f;             //!< m, depth of relief height 0 below the drawn surface, 0.001..1
 };
 

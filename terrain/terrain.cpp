@@ -4,6 +4,7 @@
 #include "renderer/bindings.h"
 #include "terrain/dem.h"
 #include "terrain/materials.h"
+#include "terrain/tess_displacement.h"
 #include "terrain/user_materials.h"
 
 #include <algorithm>
@@ -79,9 +80,14 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
     if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
     defines.push_back("MATERIAL_LAYERS=" + std::to_string(kMaxMaterialLayers));
     // Splat maps place the layers instead of the height/slope rules (user_materials.h).
-    if (const std::size_t images = splatFiles(s).size(); images > 0)
-        defines.push_back("TERRAIN_SPLAT=" + std::to_string(std::min<std::size_t>(images, kMaxSplatImages)));
+    for (std::string& d : splatDefines(s)) defines.push_back(std::move(d));
     return defines;
+}
+
+std::vector<std::string> splatDefines(const TerrainSettings& s) {
+    if (const std::size_t images = splatFiles(s).size(); images > 0)
+        return {"TERRAIN_SPLAT=" + std::to_string(std::min<std::size_t>(images, kMaxSplatImages))};
+    return {};
 }
 
 std::vector<std::string> terrainTessDefines(const TerrainSettings& s) {
@@ -373,6 +379,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     if (s.tessellation.enabled)
         while (tess_count_ < tier_counts_[0] && distances_sorted_[tess_count_] < s.tessellation.range_m) ++tess_count_;
     counters_.tess_patches = std::int64_t(tess_count_) * (index_count_ / 3);
+    counters_.tess_shadow_patches = 0;  // shadowInstances() adds the shadow passes' patches
     counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
@@ -424,10 +431,35 @@ void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& 
     instances_.swap(sorted_);
 }
 
-void Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const {
+std::size_t Terrain::shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
+                                     bool tessellate) {
     out.clear();
     cullSelection(selection_, planes, culled_);
     appendInstances(culled_.nodes, out);
+    if (!s.tessellation.enabled || !tessellate || !shaders_) return 0;
+    // The quadrants within the range in x, z (a superset of the view's, which measures in 3D: an
+    // extra one is beyond the displacement's reach and draws as it would untessellated) go first.
+    const float range = s.tessellation.range_m, half = float(source_.grid / 2);
+    auto near = [&](const TerrainInstance& i) {
+        const glm::vec2 lo(i.a.x, i.a.y), hi = lo + glm::vec2(i.a.z, i.b.z) * half;
+        return glm::length(glm::max(glm::max(lo, -hi), glm::vec2(0.0f))) < range;
+    };
+    shadow_split_.clear();
+    std::size_t tess = 0;
+    for (const TerrainInstance& i : out)
+        if (near(i))
+            out[tess++] = i;
+        else
+            shadow_split_.push_back(i);
+    std::copy(shadow_split_.begin(), shadow_split_.end(), out.begin() + std::ptrdiff_t(tess));
+    counters_.tess_shadow_patches += std::int64_t(tess) * (index_count_ / 3);
+    return tess;
+}
+
+void Terrain::bindSplat(GLuint program, GLint location) const {
+    if (splat_images_ == 0) return;
+    glBindTextureUnit(binding::kTex5, splat_.id());
+    glProgramUniform4iv(program, location, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
 }
 
 void Terrain::bindTiles(GLuint program, GLint location) const {
@@ -457,15 +489,21 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
     glBindVertexArray(vao_.id());
 }
 
-void Terrain::setTessState(const TerrainSettings& s, GLuint program) {
-    const TerrainTessSettings& t = s.tessellation;
-    glm::dvec3 rel = camera_ - s.origin;
+TessRelief Terrain::tessRelief(const TerrainSettings& s) const {
     // The relief (the rock layer's) repeats every texture_scale_m, or a user rock's tiling_m.
     const float rock_repeat = layer_repeat_m_[std::size_t(MaterialLayer::Rock)];
-    const double period = double(rock_repeat > 0.0f ? rock_repeat : s.texture_scale_m);
+    return vista::tessRelief(s.tessellation.depth_m, s.tessellation.range_m,
+                             double(rock_repeat > 0.0f ? rock_repeat : s.texture_scale_m));
+}
+
+void Terrain::setTessState(const TerrainSettings& s, GLuint program) {
+    const TerrainTessSettings& t = s.tessellation;
+    const TessRelief r = tessRelief(s);
+    glm::dvec3 rel = camera_ - s.origin;
     glProgramUniform4f(program, 28, t.edge_px, float(error_scale_), t.range_m, t.max_factor);
-    glProgramUniform4f(program, 29, t.depth_m, float(1.0 / period), float(std::fmod(rel.x, period)),
-                       float(std::fmod(rel.z, period)));
+    glProgramUniform4f(program, 29, float(r.depth_m), float(1.0 / r.period_m), float(std::fmod(rel.x, r.period_m)),
+                       float(std::fmod(rel.z, r.period_m)));
+    glProgramUniform4f(program, 30, float(r.fade_start_m), float(r.fade_end_m), float(r.layer), 0.0f);
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glBindTextureUnit(binding::kTex3, detail_.id());
 }
@@ -485,7 +523,6 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     glBindTextureUnit(binding::kTex1, normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
-    if (splat_images_ > 0) glBindTextureUnit(binding::kTex5, splat_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
     // Texture coordinates per metre of each layer: a user material's tiling_m, else texture_scale_m
     // (the generated rock at half that scale: its strata want the larger repeat).
@@ -517,8 +554,7 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
             glProgramUniform4fv(program, 32, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
             glProgramUniform1fv(program, 40, GLsizei(layer_scale.size()), layer_scale.data());
             // Only TERRAIN_SPLAT programs declare it (a location no uniform holds is a GL error).
-            if (splat_images_ > 0 && !s.splat_map.empty())
-                glProgramUniform4iv(program, 48, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
+            if (!s.splat_map.empty()) bindSplat(program, 48);
             if (tier == 0 && s.pom.enabled && pass == 1) {
                 // The relief is gone where the near tier ends (the other tiers have no POM variant).
                 const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
@@ -532,7 +568,21 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     }
 }
 
-void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot) {
+void Terrain::drawShadowPatches(const TerrainSettings& s, GLuint program, std::size_t first, std::size_t count) {
+    const GLuint tess_program = shaders_->get("terrain/shaders/terrain_tess.glsl", {"SHADOW_PASS"})->id();
+    GLfloat matrix[16];
+    glGetUniformfv(program, 16, matrix);  // the caller's cascade, tile or face matrix
+    glUseProgram(tess_program);
+    glProgramUniformMatrix4fv(tess_program, 16, 1, GL_FALSE, matrix);
+    setVertexState(s, tess_program);
+    setTessState(s, tess_program);
+    glProgramUniform1i(tess_program, 25, GLint(first));
+    glDrawElementsInstanced(GL_PATCHES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+    glUseProgram(program);
+}
+
+void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances,
+                         std::size_t tess, int slot) {
     if (instances.empty()) return;
     if (!shadow_instances_) {  // only scenes with sun shadows pay for it
         GLint align = 256;
@@ -544,45 +594,18 @@ void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::ve
     }
     const GLsizeiptr bytes = GLsizeiptr(instances.size() * sizeof(TerrainInstance));
     const GLintptr offset = shadow_slot_bytes_ * std::clamp(slot, 0, kShadowSlots - 1);
-    const std::vector<TerrainInstance>* list = &instances;
-    std::size_t tess = 0;
-    if (s.tessellation.enabled && shaders_ && slot == 0) {
-        // The quadrants within the range in x, z (a superset of the view's, which measures in 3D:
-        // an extra one is beyond the displacement's reach and draws as it would untessellated).
-        // In the first cascade only: it holds the nearest ground, and the coarser cascades'
-        // texels are larger than the relief (tessellating them too cost 1.6 times the
-        // G-buffer's extra in the meadow).
-        shadow_split_.clear();
-        for (int near = 1; near >= 0; --near)
-            for (const TerrainInstance& i : instances) {
-                const glm::vec2 lo(i.a.x, i.a.y), hi = lo + glm::vec2(i.a.z, i.b.z) * float(source_.grid / 2);
-                const glm::vec2 d = glm::max(glm::max(lo, -hi), glm::vec2(0.0f));
-                if ((glm::length(d) < s.tessellation.range_m) == bool(near)) shadow_split_.push_back(i);
-                tess += near && glm::length(d) < s.tessellation.range_m ? 1 : 0;
-            }
-        list = &shadow_split_;
-    }
-    glNamedBufferSubData(shadow_instances_.id(), offset, bytes, list->data());
+    glNamedBufferSubData(shadow_instances_.id(), offset, bytes, instances.data());
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_instances_.id(), offset, bytes);
-    if (tess > 0) {
-        const GLuint tess_program = shaders_->get("terrain/shaders/terrain_tess.glsl", {"SHADOW_PASS"})->id();
-        GLfloat matrix[16];
-        glGetUniformfv(program, 16, matrix);  // the caller's cascade matrix
-        glUseProgram(tess_program);
-        glProgramUniformMatrix4fv(tess_program, 16, 1, GL_FALSE, matrix);
-        setVertexState(s, tess_program);
-        setTessState(s, tess_program);
-        glDrawElementsInstanced(GL_PATCHES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(tess));
-        glUseProgram(program);
-    }
-    if (tess == list->size()) return;
+    tess = std::min(tess, instances.size());
+    if (tess > 0) drawShadowPatches(s, program, 0, tess);
+    if (tess == instances.size()) return;
     setVertexState(s, program);
     glProgramUniform1i(program, 25, GLint(tess));
-    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(list->size() - tess));
+    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size() - tess));
 }
 
 void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
-                              const std::function<void(std::size_t)>& before) {
+                              std::span<const std::size_t> tess, const std::function<void(std::size_t)>& before) {
     GLint align = 256;
     glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
     std::vector<GLintptr> offsets(lists.size());
@@ -599,13 +622,17 @@ void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::spa
         if (!lists[i].empty())
             glNamedBufferSubData(shadow_lists_.id(), offsets[i], GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)),
                                  lists[i].data());
-    setVertexState(s, program);
     for (std::size_t i = 0; i < lists.size(); ++i) {
         if (lists[i].empty()) continue;
         before(i);
         glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_lists_.id(), offsets[i],
                           GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)));
-        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(lists[i].size()));
+        const std::size_t patches = i < tess.size() ? std::min(tess[i], lists[i].size()) : 0;
+        if (patches > 0) drawShadowPatches(s, program, 0, patches);
+        if (patches == lists[i].size()) continue;
+        setVertexState(s, program);
+        glProgramUniform1i(program, 25, GLint(patches));
+        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(lists[i].size() - patches));
     }
 }
 

@@ -11,6 +11,7 @@
 #include "renderer/scene_targets.h"
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
+#include "terrain/tess_displacement.h"
 #include "terrain/user_materials.h"
 
 #include <array>
@@ -30,6 +31,7 @@ struct TerrainCounters {
     double select_ms = 0.0;
     double base_range_m = 0.0;  // LOD 0 range in use (after the node-size and error bounds)
     std::int64_t tess_patches = 0;  // grid triangles drawn as tessellation patches ([terrain.tessellation])
+    std::int64_t tess_shadow_patches = 0;  // the same in shadow passes (sun cascades, spot tiles, point cube faces)
 };
 
 // One quadrant of a node at its LOD level: what the shader draws per instance.
@@ -107,17 +109,31 @@ public:
     void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program = 0);
 
     // The instances of the current selection inside planes (camera-relative), for a shadow pass.
-    void shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const;
+    // With [terrain.tessellation] on and `tessellate` (the shadow view serves ground within the
+    // displacement's reach), those within range_m of the camera in x, z come first and their count
+    // is returned: drawShadow() draws them displaced as the view draws them (factors and relief
+    // for the main camera), so casters sink with the surface they shadow. Their grid triangles add
+    // to counters().tess_shadow_patches (reset by select()).
+    std::size_t shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
+                                bool tessellate);
     // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS; its matrix at
     // location 16 set) into slot 0..kShadowSlots-1 of the shadow instance buffer (made on first
-    // use). With [terrain.tessellation] on, in slot 0 (the first sun cascade) those near the
-    // camera are drawn displaced with terrain_tess.glsl's shadow program, as the view draws them.
+    // use); the first `tess` of them (shadowInstances()) as patches with terrain_tess.glsl's shadow
+    // program.
     static constexpr int kShadowSlots = 8;
-    void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances, int slot);
-    // Draws several instance lists depth-only (spot shadow tiles): all are uploaded at once, then
-    // list i is drawn after before(i) has set its viewport and matrix. Empty lists are skipped.
+    void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances,
+                    std::size_t tess, int slot);
+    // Draws several instance lists depth-only (spot shadow tiles, point cube faces): all are
+    // uploaded at once, then list i is drawn after before(i) has set its viewport and program's
+    // matrix; its first tess[i] instances as patches. Empty lists are skipped.
     void drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
-                         const std::function<void(std::size_t)>& before);
+                         std::span<const std::size_t> tess, const std::function<void(std::size_t)>& before);
+    // The displacement's relief, depth and fade for s (terrain/tess_displacement.h: the shader's
+    // uniforms and the CPU mirror).
+    TessRelief tessRelief(const TerrainSettings& s) const;
+    // Where the displacement has ended (m from the camera): shadow views that serve only ground
+    // beyond it need no tessellated casters.
+    double tessReach(const TerrainSettings& s) const { return s.tessellation.enabled ? tessRelief(s).fade_end_m : 0.0; }
     // Draws the selected nodes' boxes as lines (debug view; its buffer is made on first use).
     void drawBounds(GLuint program);
 
@@ -132,6 +148,9 @@ public:
     GLuint albedoTexture() const { return albedo_.id(); }    // material albedo array (sRGB, A = roughness)
     // Sets the tile uniforms (ivec4 count.xy, span; vec4 layer.xy, map size) at location, location + 1.
     void bindTiles(GLuint program, GLint location) const;
+    // With a splat map: binds its weights to BINDING_TEX_5 and sets the layer of each channel
+    // (ivec4[2], material.glsl splatWeightsAt) at location, location + 1 (programs with splatDefines()).
+    void bindSplat(GLuint program, GLint location) const;
 
 private:
     Terrain() = default;
@@ -145,6 +164,9 @@ private:
     void setVertexState(const TerrainSettings& s, GLuint program);
     // Sets terrain_tess.glsl's uniforms (factors for the main camera, relief) and patch size.
     void setTessState(const TerrainSettings& s, GLuint program);
+    // Draws instances [first, first + count) of the bound shadow instance range as patches with
+    // the tessellated shadow program, with the matrix the caller set on program (location 16).
+    void drawShadowPatches(const TerrainSettings& s, GLuint program, std::size_t first, std::size_t count);
 
     TerrainSettings source_;  // what was loaded (file, mapping)
     Heightmap map_;
@@ -177,7 +199,7 @@ private:
     float wetness_ = 0.0f;
     double error_scale_ = 1.0;          // the main camera's pixels per (length / distance), from select()
     std::size_t tess_count_ = 0;        // instances_ (a prefix of the near tier) drawn tessellated
-    std::vector<TerrainInstance> shadow_split_;  // scratch for drawShadow(): tessellated ones first
+    std::vector<TerrainInstance> shadow_split_;  // scratch for shadowInstances(): beyond the tessellated range
     ShaderLibrary* shaders_ = nullptr;  // for the tessellated shadow program
     float max_anisotropy_ = 1.0f;  // the GL's limit (1 without the extension)
     float anisotropy_ = 1.0f;      // what the material textures are set to
@@ -199,6 +221,9 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
 // The G-buffer program's defines for a material tier (0 near .. 2 far) and the settings' debug
 // view and wireframe (terrain.glsl: debug views are variants, so the shaded image pays nothing).
 std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier);
+// TERRAIN_SPLAT=images when a splat map places the layers (material.glsl splatWeightsAt): the
+// terrain's programs and the grass cull's, so blades grow where the splat map puts grass.
+std::vector<std::string> splatDefines(const TerrainSettings& s);
 // The tessellated near tier's program defines (terrain_tess.glsl), and its shadow program's.
 std::vector<std::string> terrainTessDefines(const TerrainSettings& s);
 // Material tier of a quadrant whose box is distance_m from the camera at its nearest.

@@ -107,6 +107,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     instances_.resize(count * kCubeFaces);
+    tess_.assign(instances_.size(), 0);
     slots_.assign(count, -1);
     PointShadowUniforms u{};
     int drawn = 0;
@@ -115,7 +116,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
         for (std::size_t f = 0; f < kCubeFaces; ++f) {
             auto& list = instances_[k * kCubeFaces + f];
             list.clear();
-            if (terrain) terrain->shadowInstances(frusta_[k * kCubeFaces + f], list);
+            tess_[k * kCubeFaces + f] = terrain ? terrain->shadowInstances(ts, frusta_[k * kCubeFaces + f], list, true) : 0;
             stats_.caster_instances += std::int64_t(list.size());
             faces += list.size();
         }
@@ -166,7 +167,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
             GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
             glUseProgram(program);
-            terrain->drawShadowLists(ts, program, instances_, [&](std::size_t i) {
+            terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);
                 const glm::mat4 m(views_[i / kCubeFaces].view_proj[i % kCubeFaces]);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);

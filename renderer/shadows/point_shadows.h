@@ -101,6 +101,7 @@ private:
     std::vector<Frustum> frusta_;
     std::vector<int> slots_;
     std::vector<std::vector<TerrainInstance>> instances_;  // per pick and face (6 k + f), reused
+    std::vector<std::size_t> tess_;  // per pick and face: its first instances drawn tessellated (Terrain::shadowInstances)
     PointShadowStats stats_;
 
     gl::Texture cubes_;

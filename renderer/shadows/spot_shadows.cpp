@@ -136,13 +136,14 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
     tiles_per_side_ = spotAtlasTilesPerSide(std::min(s.spot_max_lights, kMaxSpotShadows));
     const int tile = s.spot_atlas_resolution / tiles_per_side_;
     instances_.resize(count);
+    tess_.assign(instances_.size(), 0);
     slots_.assign(count, -1);
     SpotShadowUniforms u{};
     int drawn = 0;
     for (std::size_t k = 0; k < count; ++k) {
         auto& list = instances_[k];
         list.clear();
-        if (terrain) terrain->shadowInstances(frusta_[k], list);
+        tess_[k] = terrain ? terrain->shadowInstances(ts, frusta_[k], list, true) : 0;
         stats_.caster_instances += std::int64_t(list.size());
         if (list.empty()) continue;  // nothing casts: the light stays unshadowed (lit), no tile drawn
         slots_[k] = int(k);
@@ -191,7 +192,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
                 glViewport(x, y, tile, tile);
                 glScissor(x, y, tile, tile);
             };
-            terrain->drawShadowLists(ts, program, instances_, [&](std::size_t k) {
+            terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t k) {
                 bindTile(k);
                 const glm::mat4 m(views_[k].view_proj);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);

@@ -123,6 +123,7 @@ private:
     std::vector<Frustum> frusta_;
     std::vector<int> slots_;
     std::vector<std::vector<TerrainInstance>> instances_;  // per pick, reused
+    std::vector<std::size_t> tess_;  // per pick: its first instances drawn tessellated (Terrain::shadowInstances)
     SpotShadowStats stats_;
     int tiles_per_side_ = 1;
 

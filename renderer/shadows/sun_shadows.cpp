@@ -118,6 +118,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     stats_ = {};
     stats_.cascades = count;
     instances_.resize(std::size_t(count));
+    tess_.assign(std::size_t(count), 0);
     ShadowUniforms u{};
     const double texel0 = count > 0 ? cascades_[0].texel_m : 1.0;
     // Casters matter up to where a ray towards the sun clears the terrain's whole height span.
@@ -131,7 +132,12 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
         const ShadowCascade& c = cascades_[std::size_t(i)];
         auto& list = instances_[std::size_t(i)];
         list.clear();
-        if (terrain) terrain->shadowInstances(casterPlanes(light_, c, camera_, reach), list);
+        // Tessellated casters where the cascade serves displaced ground: it takes over from the
+        // previous one where that one's cross-fade band starts.
+        const ShadowCascade* prev = i > 0 ? &cascades_[std::size_t(i - 1)] : nullptr;
+        const double serves_from = prev ? prev->far_m - double(s.blend_band) * (prev->far_m - prev->near_m) : 0.0;
+        tess_[std::size_t(i)] =
+            terrain ? terrain->shadowInstances(ts, casterPlanes(light_, c, camera_, reach), list, serves_from < terrain->tessReach(ts)) : 0;
         stats_.caster_instances += std::int64_t(list.size());
         u.matrix[i] = glm::mat4(c.matrix);
         u.range[i] = glm::vec4(float(c.near_m), float(c.far_m), float(c.texel_m), float(2.0 * c.radius_m));
@@ -179,7 +185,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
                 glFrontFace(GL_CCW);
-                terrain->drawShadow(ts, program, instances_[std::size_t(i)], i);
+                terrain->drawShadow(ts, program, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
                 glDisable(GL_CULL_FACE);
                 if (extra.valid()) extra.draw(m);
                 glDisable(GL_POLYGON_OFFSET_FILL);

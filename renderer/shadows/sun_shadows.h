@@ -78,6 +78,7 @@ private:
     std::vector<ShadowCascade> cascades_;
     bool frozen_ = false;
     std::vector<std::vector<TerrainInstance>> instances_;  // per cascade, reused
+    std::vector<std::size_t> tess_;  // per cascade: its first instances drawn tessellated (Terrain::shadowInstances)
     SunShadowStats stats_;
     float tan_sun_radius_ = 0.0f;
 

@@ -23,7 +23,14 @@ int farSegments(int near_segments) { return std::max(1, (near_segments + 1) / 2)
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<std::string>>> grassPrograms() {
-    return {{"terrain/grass/shaders/grass_cull.glsl", {}}, {"terrain/grass/shaders/grass.glsl", {}}, {"terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"}}};
+    std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
+        {"terrain/grass/shaders/grass.glsl", {}}, {"terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"}}};
+    TerrainSettings ts;  // the cull with the height/slope rules, and with one and two splat images
+    for (const char* splat : {"", "a.png", "a.png b.png"}) {
+        ts.splat_map = splat;
+        programs.push_back({"terrain/grass/shaders/grass_cull.glsl", splatDefines(ts)});
+    }
+    return programs;
 }
 
 bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const GrassSettings& s, const glm::dvec3& eye) {
@@ -104,7 +111,7 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
                                           {std::uint32_t(2 * farSegments(s.segments) + 1), 0, 0, 0}};
             glNamedBufferSubData(draws_.id(), 0, sizeof reset, reset);
 
-            GLuint program = rc.shaders.get("terrain/grass/shaders/grass_cull.glsl")->id();
+            GLuint program = rc.shaders.get("terrain/grass/shaders/grass_cull.glsl", splatDefines(ts))->id();
             glUseProgram(program);
             glProgramUniform4i(program, 0, box_min.x, box_min.y, l.cells, l.blades_per_cell);
             glProgramUniform2i(program, 1, int(camera_cell.x), int(camera_cell.y));
@@ -133,6 +140,7 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
             glBindTextureUnit(binding::kTex0, terrain.heightTexture());
             glBindTextureUnit(binding::kTex1, terrain.normalTexture());
             glBindTextureUnit(binding::kTex2, terrain.albedoTexture());
+            if (!ts.splat_map.empty()) terrain.bindSplat(program, 24);  // blades follow its grass channel
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassDraws, draws_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
             if (count)

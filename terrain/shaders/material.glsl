@@ -1,6 +1,7 @@
 // Terrain material weights, shared by the terrain shader (terrain.glsl) and grass placement
-// (terrain/grass/shaders/grass_cull.glsl) so grass grows exactly where the ground is drawn as grass.
-// Mirrored on the CPU by terrain/material_weights.h (tests compare both).
+// (terrain/grass/shaders/grass_cull.glsl) so grass grows exactly where the ground is drawn as grass:
+// the height/slope rules (mirrored on the CPU by terrain/material_weights.h; tests compare both), or
+// with TERRAIN_SPLAT a splat map's weights.
 // bands = (sand_top, grass_top, snow_start, band_blend), in heightmap units.
 
 // 001's height bands: L = sum of clamp((h - start_i) / blend, 0, 1) over the three band
@@ -31,3 +32,35 @@ float grassWeight(float bands, float rock, float dirt) {
     float band = min(bands, 1.0) - clamp(bands - 1.0, 0.0, 1.0);
     return band * (1.0 - rock) * (1.0 - dirt);
 }
+
+// The generated layers' indices in the material arrays (terrain/materials.h MaterialLayer).
+const int SAND = 0, GRASS = 1, ROCK = 2, SNOW = 3, DIRT = 4;
+
+#ifdef TERRAIN_SPLAT
+// Splat maps (terrain/user_materials.h): TERRAIN_SPLAT RGBA images of layer weights, one texel per
+// height sample of a map of size.x x size.y samples; layers[c / 4][c % 4] is the layer channel c
+// weighs (-1: none). The weights at heightmap texel t, normalised over the channels that name a
+// layer; where none weighs anything the first channel's layer takes it all. One level, no mips:
+// the same in every stage.
+void splatWeightsAt(sampler2DArray splat, ivec4 layers[2], vec2 size, vec2 t, out vec4 a, out vec4 b) {
+    vec2 uv = (t + 0.5) / size;  // texel centres: sample i at (i + 0.5) / size
+    a = textureLod(splat, vec3(uv, 0.0), 0.0) * vec4(greaterThanEqual(layers[0], ivec4(0)));
+#if TERRAIN_SPLAT > 1
+    b = textureLod(splat, vec3(uv, 1.0), 0.0) * vec4(greaterThanEqual(layers[1], ivec4(0)));
+#else
+    b = vec4(0.0);
+#endif
+    float sum = dot(a, vec4(1.0)) + dot(b, vec4(1.0));
+    if (sum < 1e-4) {
+        a = vec4(1.0, 0.0, 0.0, 0.0);
+        sum = 1.0;
+    }
+    a /= sum;
+    b /= sum;
+}
+
+// The share of layer in splat weights a, b (splatWeightsAt).
+float splatShare(vec4 a, vec4 b, ivec4 layers[2], int layer) {
+    return dot(a, vec4(equal(layers[0], ivec4(layer)))) + dot(b, vec4(equal(layers[1], ivec4(layer))));
+}
+#endif

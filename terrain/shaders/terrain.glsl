@@ -159,8 +159,6 @@ layout(location = 0) out vec4 o_color;   // emissive radiance (0 when lit); erro
 layout(location = 1) out vec4 o_albedo;  // G-buffer albedo, roughness
 layout(location = 2) out vec4 o_normal;  // G-buffer normal, F0, lit flag
 
-const int SAND = 0, GRASS = 1, ROCK = 2, SNOW = 3, DIRT = 4;
-
 vec3 lodColor(float level) {
     const vec3 colors[8] = vec3[](vec3(1, 0.2, 0.2), vec3(1, 0.6, 0.1), vec3(0.9, 0.9, 0.1), vec3(0.3, 0.9, 0.2),
                                   vec3(0.1, 0.8, 0.9), vec3(0.2, 0.4, 1), vec3(0.7, 0.3, 1), vec3(1, 0.4, 0.8));
@@ -178,23 +176,9 @@ float wireframe() {
 }
 
 #ifdef TERRAIN_SPLAT
-// The splat weights at heightmap texel t, normalised over the channels that name a layer; where
-// none weighs anything the first channel's layer takes it all.
+// The splat weights at heightmap texel t (material.glsl).
 void splatWeights(vec2 t, out vec4 a, out vec4 b) {
-    vec2 uv = (t + 0.5) / u_tile_layer.zw;  // texel centres: sample i at (i + 0.5) / size
-    a = texture(u_splat, vec3(uv, 0.0)) * vec4(greaterThanEqual(u_splat_layers[0], ivec4(0)));
-#if TERRAIN_SPLAT > 1
-    b = texture(u_splat, vec3(uv, 1.0)) * vec4(greaterThanEqual(u_splat_layers[1], ivec4(0)));
-#else
-    b = vec4(0.0);
-#endif
-    float sum = dot(a, vec4(1.0)) + dot(b, vec4(1.0));
-    if (sum < 1e-4) {
-        a = vec4(1.0, 0.0, 0.0, 0.0);
-        sum = 1.0;
-    }
-    a /= sum;
-    b /= sum;
+    splatWeightsAt(u_splat, u_splat_layers, u_tile_layer.zw, t, a, b);
 }
 int splatLayer(int c) { return max(u_splat_layers[c / 4][c % 4], 0); }
 #endif
@@ -358,14 +342,9 @@ void main() {
     // far grass colour and wetness below come from the weights too.
     vec4 splat_a, splat_b;
     splatWeights(v_texel, splat_a, splat_b);
-    float rock = 0.0, snow = 0.0, grass = 0.0;
-    for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) {
-        float w = c < 4 ? splat_a[c] : splat_b[c - 4];
-        int layer = splatLayer(c);
-        rock += layer == ROCK ? w : 0.0;
-        snow += layer == SNOW ? w : 0.0;
-        grass += layer == GRASS ? w : 0.0;
-    }
+    float rock = splatShare(splat_a, splat_b, u_splat_layers, ROCK);
+    float snow = splatShare(splat_a, splat_b, u_splat_layers, SNOW);
+    float grass = splatShare(splat_a, splat_b, u_splat_layers, GRASS);  // grass_cull.glsl places blades by it
 #else
     // Height bands (001): L = sum of clamp((h - start_i) / blend, 0, 1); layer floor(L)
     // blends into the next by fract(L). The height is jittered to break the bands (the coarse

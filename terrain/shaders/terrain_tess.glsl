@@ -5,7 +5,7 @@
 // and its midpoint's distance from the camera), so the two patches that share an edge, at the
 // same or at neighbouring CDLOD levels and whatever their morph, give it the same factor and the
 // same vertices. The new vertices sink by the material relief (the detail array's alpha, as
-// parallax occlusion mapping uses it), fading to nothing, with factor 1, before u_tess.z.
+// parallax occlusion mapping uses it), fading to nothing, with factor 1, by u_tess_fade.y.
 // A separate file so that terrain.glsl's other programs have no tessellation stages (the shader
 // library compiles a stage wherever its name appears).
 #define TERRAIN_TESS 1
@@ -13,18 +13,19 @@
 
 #if defined(TESS_CONTROL_SHADER) || defined(TESS_EVALUATION_SHADER)
 // x: target edge length (px), y: pixels per unit of (length / distance) of the main camera, z:
-// distance (m) where displacement and subdivision have ended, w: largest factor.
+// the tessellated range (m), w: largest factor.
 layout(location = 28) uniform vec4 u_tess;
-// x: relief depth (m) below the drawn surface, y: 1 / texture_scale_m, z, w: camera x, z modulo the texture period (m).
+// x: relief depth (m) below the drawn surface, y: 1 / texture period (m), z, w: camera x, z modulo the period (m).
 layout(location = 29) uniform vec4 u_tess_relief;
-// The same layer choice as the fragment stage is out of reach per vertex (it needs the pixel's
-// band and slope weights): the displacement uses one relief for all ground, the rock layer's.
-const int kTessReliefLayer = 2;  // ROCK (terrain.glsl)
+// x, y: distance (m) where the displacement starts to fade, and is gone (factors 1 from there on);
+// z: the layer whose relief displaces (the pixel's layer blend is out of reach per vertex). All
+// from terrain/tess_displacement.h tessRelief(), the CPU mirror the GL test compares with.
+layout(location = 30) uniform vec4 u_tess_fade;
 
-// Share of the displacement left at distance d: 1 up to half the range, 0 from 90% of it on, so
-// the outermost tessellated patches meet their untessellated neighbours flat and with factor 1.
+// Share of the displacement left at distance d: the outermost tessellated patches meet their
+// untessellated neighbours flat and with factor 1.
 float tessFade(float d) {
-    return 1.0 - smoothstep(0.5 * u_tess.z, 0.9 * u_tess.z, d);
+    return 1.0 - smoothstep(u_tess_fade.x, u_tess_fade.y, d);
 }
 #endif
 
@@ -101,7 +102,7 @@ float tessDisplacement(vec3 p) {
     float fade = tessFade(length(p));
     if (fade <= 0.0) return 0.0;
     vec2 uv = (p.xz + u_tess_relief.zw) * u_tess_relief.y;
-    float h = textureLod(u_relief, vec3(uv, float(kTessReliefLayer)), 0.0).a;
+    float h = textureLod(u_relief, vec3(uv, u_tess_fade.z), 0.0).a;
     return (h - 1.0) * u_tess_relief.x * fade;
 }
 

@@ -9,6 +9,7 @@
 #include "renderer/bindings.h"
 #include "renderer/shader_library.h"
 #include "terrain/materials.h"
+#include "terrain/tess_displacement.h"
 
 #include <glm/glm.hpp>
 
@@ -28,24 +29,11 @@ ShaderLibrary& shaders() {
     return library;
 }
 
-// The relief of one layer as the GPU samples it at mip 0: bilinear between texel centres,
-// repeating.
+// The relief of one layer as the GPU samples it at mip 0 (terrain/tess_displacement.h).
 struct Relief {
     const MaterialImages* m;
     int layer;
-    double operator()(double u, double v) const {
-        const int n = m->size;
-        double x = u * n - 0.5, y = v * n - 0.5;
-        double fx = std::floor(x), fy = std::floor(y);
-        auto at = [&](double xx, double yy) {
-            int i = int(((long long)xx % n + n) % n), j = int(((long long)yy % n + n) % n);
-            return double(materialHeight(*m, layer, i, j));
-        };
-        double ax = x - fx, ay = y - fy;
-        double top = at(fx, fy) + (at(fx + 1, fy) - at(fx, fy)) * ax;
-        double bottom = at(fx, fy + 1) + (at(fx + 1, fy + 1) - at(fx, fy + 1)) * ax;
-        return top + (bottom - top) * ay;
-    }
+    double operator()(double u, double v) const { return reliefAt(*m, layer, u, v); }
 };
 
 // The exact first hit of the ray p0 - t * span (t = 0..1, ray height 1 - t) with the relief: a

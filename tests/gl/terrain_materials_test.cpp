@@ -1,11 +1,12 @@
 // User materials and splat maps (docs/terrain-materials.md): a known splat pattern comes back in
 // the material view's layer IDs pixel for pixel, a user material's albedo shows in the G-buffer
 // where the splat map puts it, and `vista check` refuses a bad material file with exit 2 naming
-// it. The test writes its own images.
+// it; grass blades grow only where the splat map's grass channel is. The test writes its own images.
 #include "../temp_dir.h"
 #include "cli_runner.h"
 #include "renderer_fixture.h"
 #include "renderer/camera.h"
+#include "terrain/grass/grass.h"
 #include "terrain/user_materials.h"
 
 #include <OpenImageIO/imageio.h>
@@ -43,6 +44,11 @@ struct Assets {
         for (int z = 0; z < kMap; ++z)
             for (int x = 0; x < kMap; ++x) splat[(std::size_t(z) * kMap + std::size_t(x)) * 4 + std::size_t(splatChannel(x, z))] = 255;
         writeImage(dir / "splat.png", kMap, kMap, 4, splat);
+        // Halves: channel 0 (grass) where x >= kMap / 2, channel 1 (sand) elsewhere.
+        std::vector<std::uint8_t> halves(std::size_t(kMap) * kMap * 4, 0);
+        for (int z = 0; z < kMap; ++z)
+            for (int x = 0; x < kMap; ++x) halves[(std::size_t(z) * kMap + std::size_t(x)) * 4 + (x >= kMap / 2 ? 0 : 1)] = 255;
+        writeImage(dir / "halves.png", kMap, kMap, 4, halves);
     }
 };
 
@@ -181,4 +187,57 @@ TEST_CASE("gl: vista check refuses a bad material file with exit 2, naming it") 
         CHECK(test::has(r, c.file));
         CHECK(test::has(r, c.says));
     }
+}
+
+TEST_CASE("gl: grass grows only where the splat map's grass channel is") {
+    // Flat ground in the grass band (the height/slope rules put grass everywhere), seen from above
+    // the line x = 0 where the splat map's grass half (x >= 0: texel kMap / 2 on) meets its sand half.
+    Settings s = splatScene();
+    s.terrain.splat_map = (assets().dir / "halves.png").string();
+    s.terrain.splat_layers = "grass sand";
+    s.terrain.materials.clear();  // no added layer: one that no channel places is refused
+    s.terrain.view = TerrainView::Shaded;
+    s.grass.enabled = true;
+    const double texel_m = kSize / double(kMap - 1);
+    // World x of each drawn blade's root (the blade buffer's first vec4: camera-relative root, width).
+    auto bladesX = [&](const Settings& scene) {
+        test::adoptTerrain(renderer(), scene.terrain, kMap, [](int, int) { return 0.3f; });
+        const double ground = renderer().terrain()->heightAt(0.0, 0.0);
+        const ViewParams view{{0.0, ground + 20.0, 0.0}, 0.0, -89.0, 70.0, 0.1, 64, 64};
+        FrameRequest request;
+        request.count_grass = true;
+        renderer().resetHistory();
+        test::RenderedFrame f = test::renderFrame(renderer(), scene, view, 0.0, request);
+        Grass* grass = renderer().grass();
+        REQUIRE(grass);
+        std::uint32_t draws[8] = {};
+        glGetNamedBufferSubData(grass->drawBuffer(), 0, sizeof draws, draws);
+        std::vector<double> xs;
+        for (const auto& [first, count] : {std::pair<std::size_t, std::size_t>{0, draws[1]}, {grass->farStart(), draws[5]}}) {
+            std::vector<float> blades(count * kGrassBladeBytes / sizeof(float));
+            if (count > 0)
+                glGetNamedBufferSubData(grass->bladeBuffer(), GLintptr(first * kGrassBladeBytes), GLsizeiptr(count * kGrassBladeBytes),
+                                        blades.data());
+            for (std::size_t b = 0; b < count; ++b) xs.push_back(view.position.x + double(blades[b * kGrassBladeBytes / sizeof(float)]));
+        }
+        CHECK(f.counter("grass.blades") == xs.size());
+        return xs;
+    };
+    auto count = [](const std::vector<double>& xs, double lo, double hi) {
+        return std::count_if(xs.begin(), xs.end(), [&](double x) { return x >= lo && x < hi; });
+    };
+    const std::vector<double> splat = bladesX(s);
+    Settings rules = s;
+    rules.terrain.splat_map.clear();
+    rules.terrain.splat_layers.clear();
+    const std::vector<double> by_rules = bladesX(rules);
+    // Between the last sand texel (x = -texel_m) and the first grass one (x = 0) the weights blend.
+    const auto splat_sand = count(splat, -1e9, -texel_m), splat_grass = count(splat, 0.0, 1e9);
+    const auto rules_sand = count(by_rules, -1e9, -texel_m), rules_grass = count(by_rules, 0.0, 1e9);
+    std::printf("grass on a splat map's halves: %td blades on the sand half, %td on the grass half (height/slope rules: %td, %td)\n",
+                splat_sand, splat_grass, rules_sand, rules_grass);
+    CHECK(rules_sand > 200);  // the rules alone grow grass on both halves
+    CHECK(rules_grass > 200);
+    CHECK(splat_sand == 0);
+    CHECK(splat_grass > rules_grass / 2);
 }

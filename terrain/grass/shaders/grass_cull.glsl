@@ -2,7 +2,8 @@
 // The slot's world cell comes from the integer toroidal wrap, the blade from a hash of the
 // cell and its index; then, cheapest first: distance (blades thin out and shrink toward
 // radius_m), the terrain's height and grass weight (terrain/shaders/material.glsl, the same
-// as the terrain shader), the view frustum. Survivors get their wind bend and are appended
+// as the terrain shader: the height/slope rules, or with TERRAIN_SPLAT the splat map's grass
+// share), the view frustum. Survivors get their wind bend and are appended
 // to the near or far list (atomic counts in the indirect draw commands); a list that is full
 // gives its increment back, so its count ends at its capacity.
 #ifdef COMPUTE_SHADER
@@ -45,6 +46,10 @@ layout(location = 20) uniform vec4 u_color;        // tip colour (linear), colou
 layout(location = 21) uniform vec4 u_dry;          // dry colour (linear), dry fraction
 layout(location = 23) uniform ivec2 u_box_mod;     // box min cell modulo cells per side (0..cells-1)
 layout(location = 22) uniform uvec4 u_capacity;    // near, far list capacity; far list start; count blades (0/1)
+#ifdef TERRAIN_SPLAT
+layout(binding = BINDING_TEX_5) uniform sampler2DArray u_splat;  // the terrain's splat weights (terrain.glsl's)
+layout(location = 24) uniform ivec4 u_splat_layers[2];           // layer per splat channel (-1: none)
+#endif
 
 shared uint s_drawn;
 
@@ -97,12 +102,19 @@ bool cull(uint id, out GrassBlade blade, out uint list) {
     float fade = clamp((keep - thin) / (0.2 * keep), 0.0, 1.0) * (1.0 - smoothstep(0.8 * u_radius.x, u_radius.x, d));
     if (fade <= 0.01) return false;
 
-    // Where the terrain shader draws grass (its band jitter noise sampled at the finest level).
+    // Where the terrain shader draws grass: the splat map's grass share, or the height/slope rules
+    // (their band jitter noise sampled at the finest level).
     vec3 n = safeNormalize(textureLod(u_normals, tileCoord(texel, u_tiles, u_tile_layer), 0.0).xyz);
-    float noise = textureLod(u_albedo, vec3((rel_xz + u_tex_offset) * u_material.z, 2.0), 0.0).g;
+#ifdef TERRAIN_SPLAT
+    vec4 splat_a, splat_b;
+    splatWeightsAt(u_splat, u_splat_layers, u_tile_layer.zw, texel, splat_a, splat_b);
+    float weight = splatShare(splat_a, splat_b, u_splat_layers, GRASS);
+#else
+    float noise = textureLod(u_albedo, vec3((rel_xz + u_tex_offset) * u_material.z, float(ROCK)), 0.0).g;
     float bands = materialBands(s + bandJitter(noise, u_material.x), u_bands);
     float rock = rockWeight(n.y, u_material.y);
     float weight = grassWeight(bands, rock, dirtWeight(n.y, u_material.y, rock, bands));
+#endif
     if (grassRandom(h, 5u) >= weight) return false;
 
     float len = u_blade.x * (1.0 + u_blade.y * (grassRandom(h, 3u) * 2.0 - 1.0)) * fade * mix(0.6, 1.0, weight);
