@@ -424,10 +424,17 @@ void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& 
     instances_.swap(sorted_);
 }
 
-void Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const {
+std::size_t Terrain::shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out,
+                                     const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep) const {
     out.clear();
     cullSelection(selection_, planes, culled_);
     appendInstances(culled_.nodes, out);
+    if (!keep) return 0;
+    const std::size_t inside = out.size();  // counted in instances, as the pass draws them
+    std::erase_if(culled_.nodes, [&keep](const SelectedNode& n) { return !keep(n.min_rel, n.max_rel); });
+    out.clear();
+    appendInstances(culled_.nodes, out);
+    return inside - out.size();
 }
 
 void Terrain::bindTiles(GLuint program, GLint location) const {

@@ -106,8 +106,11 @@ public:
     // (terrainTessDefines()).
     void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program = 0);
 
-    // The instances of the current selection inside planes (camera-relative), for a shadow pass.
-    void shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out) const;
+    // The instances of the current selection inside planes (camera-relative), for a shadow pass;
+    // with `keep`, only the nodes whose camera-relative box (lo, hi) it accepts. Returns how
+    // many instances inside the planes `keep` left out.
+    std::size_t shadowInstances(const Frustum& planes, std::vector<TerrainInstance>& out,
+                                const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep = {}) const;
     // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS; its matrix at
     // location 16 set) into slot 0..kShadowSlots-1 of the shadow instance buffer (made on first
     // use). With [terrain.tessellation] on, in slot 0 (the first sun cascade) those near the
