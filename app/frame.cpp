@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vista {
 
@@ -289,6 +290,23 @@ void addPresentPass(FrameGraph& graph, const RenderContext& rc, TextureHandle di
         });
 }
 
+// The lowest world height a sun-shadow receiver can have: the terrain's lowest sample, the sea's
+// lowest trough (when on), the bottom of the lowest placed object's bounding sphere.
+double lowestReceiver(const Terrain& terrain, const Settings& s, const Objects* objects) {
+    const MinMaxQuadtree& tree = terrain.quadtree();
+    double lowest = std::numeric_limits<double>::infinity();
+    if (tree.levels() > 0) {
+        const glm::ivec2 top = tree.nodesPerSide(tree.levels() - 1);
+        for (int z = 0; z < top.y; ++z)
+            for (int x = 0; x < top.x; ++x) lowest = std::min(lowest, double(tree.minMax(tree.levels() - 1, x, z).x));
+    } else {
+        return -std::numeric_limits<double>::infinity();  // no tree: no floor known
+    }
+    if (s.water.enabled) lowest = std::min(lowest, double(s.water.level_m) - makeWaves(s.water).max_height);
+    if (objects && s.objects.enabled) lowest = std::min(lowest, objects->lowestPoint());
+    return lowest;
+}
+
 }  // namespace
 
 SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
@@ -312,11 +330,13 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
-    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain, extra);
+    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain, extra,
+                                                     lowestReceiver(*terrain_, s, objects_.get()));
     const SunShadowStats& st = sun_shadows_->stats();
     report.counters["shadows.cascades"] = double(st.cascades);
     report.counters["shadows.drawn"] = double(st.drawn);
     report.counters["shadows.caster_instances"] = double(st.caster_instances);
+    report.counters["shadows.casters_skipped"] = double(st.casters_skipped);
     return shadows;
 }
 
@@ -662,6 +682,7 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
         const WaterStats& st = sea.stats();
         report.counters["water.vertices"] = double(st.vertices);
         report.counters["water.triangles"] = double(st.triangles);
+        report.counters["water.segments"] = double(st.segments);  // of the ring grid's, those that can be in view
         report.counters["water.waves"] = double(st.waves);
         report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
     } else if (!s.water.enabled) {

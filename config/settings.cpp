@@ -411,6 +411,8 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"min_sun_elevation_deg", "deg", "below this sun elevation there are no sun shadows (and no shadow passes)"}, s.min_sun_elevation_deg, -10.0f, 90.0f);
     v.field({"stabilize", "", "sphere-fitted cascades snapped to whole texels (off: tight boxes that shimmer)"}, s.stabilize);
     v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
+    v.field({"caster_cull", "", "leave out terrain quadrants whose shadows cannot reach the view depths a cascade "
+             "shades (off: every quadrant in the cascade's box, same image, slower)"}, s.caster_cull);
     v.field({"spot_enabled", "", "spot lights (with `shadow on`, their default) cast shadows from an atlas, largest on screen first"}, s.spot_enabled);
     v.field({"spot_atlas_resolution", "texels", "spot shadow atlas size per side"}, s.spot_atlas_resolution, 256, 8192);
     v.field({"spot_max_lights", "", "shadowed spot lights at once (atlas tiles); the rest go unshadowed and are counted"}, s.spot_max_lights, 1, 64);
@@ -474,6 +476,8 @@ void describe(SettingsVisitor& v, WaterSettings& s) {
     v.field({"grid_cell_m", "m", "grid cell at the camera (at least 1% of the height above the water)"}, s.grid_cell_m, 0.05f, 100.0f);
     v.field({"grid_segments", "", "segments around each ring of the camera-centred grid"}, s.grid_segments, 16, 1024);
     v.field({"max_distance_m", "m", "outer radius of the grid"}, s.max_distance_m, 100.0f, 1.0e7f);
+    v.field({"sector_cull", "", "draw only the grid's segments that displaced waves can bring into view (off: the whole "
+             "circle, same image, slower)"}, s.sector_cull);
     v.field({"scatter_color", "", "single-scattering albedo of the water body (its deep colour)"}, s.scatter_color, 0.0f, 1.0f);
     v.field({"absorption_per_m", "1/m", "extinction of light in the water per metre (Beer-Lambert)"}, s.absorption_per_m, 0.0f, 100.0f);
     v.field({"roughness", "", "perceptual roughness below the smallest wave (width of the sun glitter)"}, s.roughness, 0.01f, 1.0f);

@@ -467,6 +467,7 @@ struct ShadowSettings {
     float min_sun_elevation_deg = 0.0f;  //!< deg, below this the sun casts no shadows (no passes), -10..90
     bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
+    bool caster_cull = true;             //!< leave out terrain quadrants whose shadows cannot reach a cascade's receivers (off: every quadrant in its box, same image, slower)
     // Shadowed spot lights (renderer/shadows/spot_shadows.h): the visible spot lights with `shadow on`
     // (their default), largest on screen first, each get a square tile of one depth atlas.
     bool spot_enabled = true;            //!< spot lights cast shadows from the atlas
@@ -558,6 +559,7 @@ struct WaterSettings {
     float grid_cell_m = 0.5f;             //!< m, grid cell at the camera (grows with 1% of the height above the water), 0.05..100
     int grid_segments = 128;              //!< segments around each ring of the camera-centred grid, 16..1024
     float max_distance_m = 1.0e6f;        //!< m, the grid's outer radius, 100..1e7
+    bool sector_cull = true;              //!< draw only the grid's segments the view can see (off: the whole circle, same image, slower)
     glm::vec3 scatter_color{0.012f, 0.05f, 0.06f};     //!< single-scattering albedo of the water body (its deep colour), 0..1
     glm::vec3 absorption_per_m{0.45f, 0.075f, 0.05f}; //!< 1/m, extinction of light in the water (Beer-Lambert), 0..100
     float roughness = 0.08f;              //!< perceptual roughness below the smallest wave (sun glitter width), 0.01..1

@@ -432,10 +432,19 @@ void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& 
 }
 
 std::size_t Terrain::shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
-                                     bool tessellate) {
+                                     bool tessellate,
+                                     const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep,
+                                     std::size_t* skipped) {
     out.clear();
     cullSelection(selection_, planes, culled_);
     appendInstances(culled_.nodes, out);
+    if (keep) {
+        const std::size_t inside = out.size();  // counted in instances, as the pass draws them
+        std::erase_if(culled_.nodes, [&keep](const SelectedNode& n) { return !keep(n.min_rel, n.max_rel); });
+        out.clear();
+        appendInstances(culled_.nodes, out);
+        if (skipped) *skipped = inside - out.size();
+    }
     if (!s.tessellation.enabled || !tessellate || !shaders_) return 0;
     // The quadrants within the range in x, z (a superset of the view's, which measures in 3D: an
     // extra one is beyond the displacement's reach and draws as it would untessellated) go first.

@@ -108,14 +108,18 @@ public:
     // (terrainTessDefines()).
     void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program = 0);
 
-    // The instances of the current selection inside planes (camera-relative), for a shadow pass.
-    // With [terrain.tessellation] on and `tessellate` (the shadow view serves ground within the
-    // displacement's reach), those within range_m of the camera in x, z come first and their count
-    // is returned: drawShadow() draws them displaced as the view draws them (factors and relief
-    // for the main camera), so casters sink with the surface they shadow. Their grid triangles add
-    // to counters().tess_shadow_patches (reset by select()).
+    // The instances of the current selection inside planes (camera-relative), for a shadow pass;
+    // with `keep`, only the nodes whose camera-relative box (lo, hi) it accepts (`skipped`, when
+    // given, gets how many instances inside the planes it left out). With [terrain.tessellation]
+    // on and `tessellate` (the shadow view serves ground within the displacement's reach), those
+    // within range_m of the camera in x, z come first and their count is returned: drawShadow()
+    // draws them displaced as the view draws them (factors and relief for the main camera), so
+    // casters sink with the surface they shadow. Their grid triangles add to
+    // counters().tess_shadow_patches (reset by select()).
     std::size_t shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
-                                bool tessellate);
+                                bool tessellate,
+                                const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep = {},
+                                std::size_t* skipped = nullptr);
     // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS; its matrix at
     // location 16 set) into slot 0..kShadowSlots-1 of the shadow instance buffer (made on first
     // use); the first `tess` of them (shadowInstances()) as patches with terrain_tess.glsl's shadow

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace vista {
@@ -546,6 +547,16 @@ void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, shadow_counter_);
     glDispatchCompute(GLuint((models_.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+double Objects::lowestPoint() const {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t m = 0; m < models_.size() && m < spheres_.size() && m < placed_.size(); ++m) {
+        const glm::vec4& sphere = spheres_[m];
+        const double reach = glm::length(glm::dvec3(sphere)) + double(sphere.w);
+        for (const PlacedObject& p : placed_[m]) lowest = std::min(lowest, p.position.y - reach * double(p.scale));
+    }
+    return lowest;
 }
 
 void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, double radius_m,

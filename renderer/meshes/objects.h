@@ -119,6 +119,8 @@ public:
     void setSortTransparent(bool on) { sort_transparent_ = on; }  // tests: off draws in placement order
 
     const ObjectStats& stats() const { return stats_; }
+    // The lowest world height a placed instance's bounding sphere reaches (+infinity: none placed).
+    double lowestPoint() const;
     std::size_t memoryBytes() const { return stats_.memory_bytes; }
     const std::vector<Model>& models() const { return models_; }
     // Placed instances per model, in upload order (tests).

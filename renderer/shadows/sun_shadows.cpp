@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace vista {
@@ -56,6 +57,7 @@ std::vector<std::pair<double, double>> cascadeSlices(const ShadowSettings& s, do
 void SunShadows::prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir,
                          const ViewParams& view, const ViewParams& fit_view) {
     camera_ = view.position;
+    forward_ = viewMatrices(view).forward;
     tan_sun_radius_ = float(std::tan(glm::radians(double(sky.sun_angular_radius_deg)))) * s.sun_size_scale;
     const auto slices = cascadeSlices(s, view.near_m);
     const bool keep = s.freeze && frozen_ && cascades_.size() == slices.size() && settings_.resolution == s.resolution;
@@ -112,7 +114,7 @@ void SunShadows::allocate(int resolution, int layers) {
 }
 
 SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts, const ShadowCaster& extra) {
+                                     const TerrainSettings& ts, const ShadowCaster& extra, double receivers_above_m) {
     const ShadowSettings& s = settings_;
     const int count = int(cascades_.size());
     stats_ = {};
@@ -132,17 +134,33 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
         const ShadowCascade& c = cascades_[std::size_t(i)];
         auto& list = instances_[std::size_t(i)];
         list.clear();
-        // Tessellated casters where the cascade serves displaced ground: it takes over from the
-        // previous one where that one's cross-fade band starts.
+        // The PCF kernel keeps cascade 0's world size, and at least a texel (or the set radius if smaller).
+        float radius = std::max(float(s.filter_radius_texels * texel0 / c.texel_m), std::min(s.filter_radius_texels, 1.0f));
+        // This cascade is read from the nearer one's cross-fade band on (shadows.glsl sunShadow).
         const ShadowCascade* prev = i > 0 ? &cascades_[std::size_t(i - 1)] : nullptr;
         const double serves_from = prev ? prev->far_m - double(s.blend_band) * (prev->far_m - prev->near_m) : 0.0;
-        tess_[std::size_t(i)] =
-            terrain ? terrain->shadowInstances(ts, casterPlanes(light_, c, camera_, reach), list, serves_from < terrain->tessReach(ts)) : 0;
+        tess_[std::size_t(i)] = 0;
+        if (terrain) {
+            std::function<bool(const glm::dvec3&, const glm::dvec3&)> keep;
+            if (prev && s.caster_cull) {
+                // A lookup lands up to the normal offset, the filter kernel (or the PCSS search)
+                // and a bilinear texel from its receiver, so depth and floor give way by that twice.
+                const double kernel = std::max(double(radius), s.filter == ShadowFilter::Pcss ? double(s.max_penumbra_texels) : 0.0);
+                const double margin = 2.0 * c.texel_m * (double(s.normal_offset_texels) + kernel + 2.0);
+                const double floor = receivers_above_m - camera_.y - margin;
+                keep = [this, floor, depth = serves_from - margin](const glm::dvec3& lo, const glm::dvec3& hi) {
+                    return casterReachesDepth(lo, hi, forward_, light_.dir, floor, depth);
+                };
+            }
+            // Tessellated casters where the cascade serves displaced ground.
+            std::size_t skipped = 0;
+            tess_[std::size_t(i)] = terrain->shadowInstances(ts, casterPlanes(light_, c, camera_, reach), list,
+                                                             serves_from < terrain->tessReach(ts), keep, &skipped);
+            stats_.casters_skipped += std::int64_t(skipped);
+        }
         stats_.caster_instances += std::int64_t(list.size());
         u.matrix[i] = glm::mat4(c.matrix);
         u.range[i] = glm::vec4(float(c.near_m), float(c.far_m), float(c.texel_m), float(2.0 * c.radius_m));
-        // The PCF kernel keeps cascade 0's world size, and at least a texel (or the set radius if smaller).
-        float radius = std::max(float(s.filter_radius_texels * texel0 / c.texel_m), std::min(s.filter_radius_texels, 1.0f));
         u.info[i] = glm::vec4(list.empty() ? 0.0f : 1.0f, radius, 0.0f, 0.0f);
         if (!list.empty()) ++stats_.drawn;
     }

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct SunShadowStats {
     int cascades = 0;                // in use this frame (PSSM + far)
     int drawn = 0;                   // of those with casters (a pass each)
     std::int64_t caster_instances = 0;  // terrain quadrants drawn over all cascades
+    std::int64_t casters_skipped = 0;   // quadrants in a cascade's box whose shadow cannot reach its receivers
     std::size_t memory_bytes = 0;    // shadow map + uniforms
 };
 
@@ -60,8 +62,13 @@ public:
 
     // One "shadows.cascadeN" pass per cascade with casters in the terrain's selection; `extra`
     // (grass; may be invalid) is drawn too into the cascades that start within its reach.
+    // receivers_above_m: no receiver (terrain, sea, object) lies below this world height; a
+    // cascade past the first then leaves out the terrain quadrants whose shadows, running away
+    // from the sun down to there, cannot reach the view depths that read it (the nearer
+    // cascades' receivers): the same shadows, fewer casters (shadows.casters_skipped).
     SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
-                             const ShadowCaster& extra = {});
+                             const ShadowCaster& extra = {},
+                             double receivers_above_m = -std::numeric_limits<double>::infinity());
 
     const std::vector<ShadowCascade>& cascades() const { return cascades_; }
     const LightBasis& light() const { return light_; }
@@ -75,6 +82,7 @@ private:
     ShadowSettings settings_;
     LightBasis light_;
     glm::dvec3 camera_{0.0};
+    glm::dvec3 forward_{0.0, 0.0, -1.0};  // the view's (receivers' view depths are along it)
     std::vector<ShadowCascade> cascades_;
     bool frozen_ = false;
     std::vector<std::vector<TerrainInstance>> instances_;  // per cascade, reused

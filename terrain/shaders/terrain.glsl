@@ -50,8 +50,8 @@ float surfaceSample(vec2 t) {
 layout(location = 16) uniform mat4 u_shadow_matrix;
 #endif
 out vec3 v_rel;        // camera-relative position (m)
-out vec2 v_texel;      // heightmap texel coordinates
-out float v_sample;    // heightmap value (for material bands)
+out vec2 v_texel;      // heightmap texel coordinates (the fragment stage derives it from v_rel but for TERRAIN_TESS)
+out float v_sample;    // heightmap value (for material bands; likewise)
 out vec2 v_grid;       // grid coordinates within the instance (wireframe view)
 flat out vec2 v_lod;   // level, unused
 out float v_morph;
@@ -150,8 +150,17 @@ layout(location = 48) uniform ivec4 u_splat_layers[2];
 #endif
 
 in vec3 v_rel;
+#ifdef TERRAIN_TESS
 in vec2 v_texel;
 in float v_sample;
+#else
+// Both are affine in v_rel, so derived per pixel they equal the interpolated ones up to rounding;
+// left out of the vertex outputs, every triangle has three attributes fewer to set up, which on
+// llvmpipe (the triangle setup runs on the application's thread) cut terrain.gbuffer to about
+// 0.7 of its time on the grazing 4096^2 view (docs/performance.md).
+#define v_texel ((v_rel.xz - u_map_min) / u_texel_m)
+#define v_sample ((v_rel.y - u_height_map.y) / u_height_map.x)
+#endif
 in vec2 v_grid;
 flat in vec2 v_lod;
 in float v_morph;

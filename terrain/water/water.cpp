@@ -2,6 +2,8 @@
 // the uniform block (waves packed for this frame's camera and time) and the three passes.
 #include "terrain/water/water.h"
 
+#include "terrain/water/grid_sectors.h"
+
 #include "renderer/lighting/local_lights.h"
 #include "renderer/bindings.h"
 #include "sky/atmosphere.h"
@@ -51,8 +53,10 @@ void Water::buildGrid(int segments, int rings) {
     std::vector<std::uint32_t> indices;
     indices.reserve(std::size_t(rings) * std::size_t(segments) * 6);
     const auto at = [segments](int ring, int segment) { return std::uint32_t(ring * segments + segment % segments); };
-    for (int j = 0; j < rings; ++j)
-        for (int i = 0; i < segments; ++i) {
+    // Segment-major, each segment from the eye outwards: segment i's first `r` rings are the
+    // indices [6 rings i, 6 (rings i + r)), so a frame draws any subset of segments and rings.
+    for (int i = 0; i < segments; ++i)
+        for (int j = 0; j < rings; ++j) {
             const std::uint32_t v00 = at(j, i), v01 = at(j, i + 1), v10 = at(j + 1, i), v11 = at(j + 1, i + 1);
             indices.insert(indices.end(), {v00, v10, v01, v01, v10, v11});
         }
@@ -61,6 +65,14 @@ void Water::buildGrid(int segments, int rings) {
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
     built_segments_ = segments;
     built_rings_ = rings;
+}
+
+void Water::countDrawn(int segments) {
+    stats_.segments = segments;
+    // Each drawn segment's rings (its two edges' vertices: neighbours share one edge).
+    const bool whole = segments == grid_.segments;
+    stats_.vertices = std::uint64_t(grid_.rings + 1) * std::uint64_t(segments + (whole ? 0 : 1));
+    stats_.triangles = 2 * std::uint64_t(grid_.rings) * std::uint64_t(segments);
 }
 
 void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
@@ -72,14 +84,15 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
     }
     const double height = view.position.y - double(s.level_m);
     grid_ = waterGrid(s, height);
+    height_above_m_ = height;
     // The grid at the surface itself has the most rings: the index buffer is made for that.
     const WaterGrid largest = waterGrid(s, 0.0);
     if (largest.segments != built_segments_ || largest.rings != built_rings_) buildGrid(largest.segments, largest.rings);
 
     const glm::dvec2 eye{view.position.x, view.position.z};
     stats_.waves = int(waves_.waves.size());
-    stats_.vertices = std::uint64_t(grid_.rings + 1) * std::uint64_t(grid_.segments);
-    stats_.triangles = 2 * std::uint64_t(grid_.rings) * std::uint64_t(grid_.segments);
+    countDrawn(grid_.segments);
+    sector_cull_ = s.sector_cull;
     stats_.surface_height_m = double(s.level_m) + evaluateWaves(waves_, eye, time_s).displacement.y;
     // Dry land at the eye (ground above every wave there): no water around it.
     const bool dry = ground_m > double(s.level_m) + waves_.max_height;
@@ -149,6 +162,23 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         if (lights) defines.push_back(lights->define());
         if (shadows.valid()) defines.push_back("HAS_SUN_SHADOW");
     }
+    // The segments that can be in view (from the matrix the vertex stage uses, jitter included),
+    // each drawn from the eye out to this frame's last ring: one range per segment.
+    const SectorRange sectors =
+        sector_cull_ ? visibleSectors(grid_, height_above_m_, waves_.max_height, waves_.max_chop,
+                                      frustumFromViewProj(glm::dmat4(rc.matrices.view_proj)))
+                     : SectorRange{0, grid_.segments};
+    countDrawn(sectors.count);
+    std::vector<GLsizei> counts(std::size_t(sectors.count), GLsizei(6 * grid_.rings));
+    std::vector<const void*> offsets;
+    for (int k = 0; k < sectors.count; ++k) {
+        const std::size_t segment = std::size_t((sectors.first + k) % grid_.segments);
+        offsets.push_back(reinterpret_cast<const void*>(segment * std::size_t(built_rings_) * 6 * sizeof(std::uint32_t)));
+    }
+    auto draw = [counts = std::move(counts), offsets = std::move(offsets)] {
+        if (!counts.empty())
+            glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
+    };
     const SurfaceData& d = graph.addPass<SurfaceData>("water.surface",
         [&](PassBuilder& b, SurfaceData& data) {
             data.color = b.read(c.color);
@@ -158,7 +188,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             data.hdr = b.write(targets.hdr);
             data.depth = b.write(targets.depth);
         },
-        [this, &rc, sky, lights, defines, shadows](const SurfaceData& data, PassContext& ctx) {
+        [this, &rc, sky, lights, defines, shadows, draw](const SurfaceData& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
             const GLuint program = rc.shaders.get(kSurfaceProgram, defines)->id();
@@ -175,10 +205,9 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             glDepthMask(GL_TRUE);
             glDisable(GL_CULL_FACE);  // seen from above and from below
             glBindVertexArray(vao_.id());
-            const GLsizei count = GLsizei(6 * std::size_t(grid_.rings) * std::size_t(grid_.segments));
             const bool lit = lights && view_ == WaterView::Shaded;
             if (lit) glProgramUniform2ui(program, 0, 0, kLightChunk);
-            glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+            draw();
             if (lit && lights->chunks() > 1) {
                 // The lights past the first chunk (lights.glsl chunkOf): the surface again, its
                 // local light only, added where the depth is the surface's own.
@@ -190,7 +219,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
                 glBlendFunc(GL_ONE, GL_ONE);
                 for (std::uint32_t k = 1; k < lights->chunks(); ++k) {
                     glProgramUniform2ui(chunk, 0, k * kLightChunk, kLightChunk);
-                    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+                    draw();
                 }
                 glDisable(GL_BLEND);
                 glBlendFunc(GL_ONE, GL_ZERO);

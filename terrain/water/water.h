@@ -40,7 +40,8 @@ struct WaterLight {
 
 // The camera-centred ring grid for an eye h metres above (or below) the still surface: ring j
 // at radius c (e^(a j) - 1), a = 2 pi / segments, c = max(grid_cell_m, 0.01 h) / a, rings out
-// to max_distance_m.
+// to max_distance_m. Its index buffer is segment by segment (each from the eye outwards), so the
+// segments that can be in view (terrain/water/grid_sectors.h) are drawn and the rest skipped.
 struct WaterGrid {
     int segments = 0, rings = 0;
     double ring_constant = 0.0;  // c, m
@@ -50,6 +51,7 @@ WaterGrid waterGrid(const WaterSettings& s, double height_above_m);
 
 struct WaterStats {
     std::uint64_t vertices = 0, triangles = 0;  // of the grid drawn this frame
+    int segments = 0;           // of the grid's segments, those drawn (the rest cannot be in view)
     int waves = 0;
     bool underwater = false;    // the eye is below the surface at its own x, z
     bool near_surface = false;  // the eye may be below the surface somewhere on the near plane: water.underwater runs
@@ -83,12 +85,16 @@ public:
 private:
     struct Uniforms;
     void buildGrid(int segments, int rings);
+    // Updates stats_ for the segments drawn this frame.
+    void countDrawn(int segments);
 
     WaterSettings waves_for_{};
     bool have_waves_ = false;
     WaveSet waves_;
     WaterGrid grid_;
+    double height_above_m_ = 0.0;  // the eye above the still surface (m; negative below it)
     int built_segments_ = 0, built_rings_ = 0;
+    bool sector_cull_ = true;  // as prepared: [water] sector_cull
     gl::VertexArray vao_;
     gl::Buffer indices_, uniforms_;
     WaterStats stats_;

@@ -77,6 +77,7 @@ WaveSet makeWaves(const WaterSettings& s) {
     }
     if (squeeze > kMaxSqueeze)
         for (GerstnerWave& w : set.waves) w.chop *= kMaxSqueeze / squeeze;
+    for (const GerstnerWave& w : set.waves) set.max_chop += w.chop;
     return set;
 }
 

@@ -46,6 +46,7 @@ struct WaveSet {
     double peak_angular_frequency = 0.0;  // omega_p of the spectrum, rad/s
     double band_low = 0.0, band_high = 0.0;  // omega range the waves' bins cover, rad/s
     double max_height = 0.0;           // sum of amplitudes: |y| never exceeds it
+    double max_chop = 0.0;             // sum of horizontal amplitudes: |x|, |z| shifts never exceed it
 };
 
 // Peak of the Pierson-Moskowitz spectrum for a wind speed (m/s): omega_p = 0.855 g / U.

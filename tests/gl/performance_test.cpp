@@ -1,6 +1,8 @@
 // Issue 21's savings under OSMesa, checked by what they must not change: the terrain's material
 // tiers draw the image the near tier draws everywhere (no seam); lights below the screen
-// footprint are skipped; a frame whose lights reach no tile draws no shade pass.
+// footprint are skipped; a frame whose lights reach no tile draws no shade pass; the sun
+// cascades leave out casters whose shadows cannot reach their receivers, and the sea draws
+// only the grid segments in view, both with the image they have without the cut.
 #include "app/frame.h"
 #include "app/scene.h"
 #include "renderer/lighting/light_settings.h"
@@ -64,6 +66,17 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 
 // A grazing view from the map's edge across the hills: near, mid and far quadrants.
 const ViewParams kGrazing{{-1900.0, 340.0, -1900.0}, 135.0, -8.0, 60.0, 0.5, 192, 108};
+
+// The largest difference between two HDR images relative to the brighter one's peak (alpha left out).
+double relativeDifference(const Frame& a, const Frame& b) {
+    double peak = 1e-6, diff = 0.0;
+    for (std::size_t i = 0; i < a.hdr.size() && i < b.hdr.size(); ++i) {
+        if (i % 4 == 3) continue;
+        peak = std::max({peak, double(a.hdr[i]), double(b.hdr[i])});
+        diff = std::max(diff, std::abs(double(a.hdr[i]) - double(b.hdr[i])));
+    }
+    return diff / peak;
+}
 
 }  // namespace
 
@@ -153,4 +166,53 @@ TEST_CASE("gl: lights below the screen footprint are skipped, and lights that re
     Frame lamp = render(s, view);
     CHECK(lamp.exact > 0);
     CHECK(lamp.shade_draws == 1);
+}
+
+TEST_CASE("gl: sun cascades leave out casters whose shadows cannot reach their receivers, with the same image") {
+    Settings s = hills();
+    // Four PSSM cascades to 2 km and the far one to 5 km: the hills' 500 m quadrants near the
+    // camera lie wholly before the far cascade's first view depth.
+    s.shadows.max_distance_m = 2000.0f;
+    s.sky.sun_elevation_deg = 25.0f;
+    const ViewParams view = kGrazing;
+    // The sun ahead of the view (shadows point back at the camera) and behind it (they run away).
+    for (float azimuth : {135.0f, 315.0f, 45.0f}) {
+        CAPTURE(azimuth);
+        s.sky.sun_azimuth_deg = azimuth;
+        s.shadows.caster_cull = true;
+        const Frame cut = render(s, view);
+        s.shadows.caster_cull = false;
+        const Frame all = render(s, view);
+        const auto& c = cut.report.counters;
+        CHECK(c.at("shadows.drawn") >= 3.0);
+        CHECK(all.report.counters.at("shadows.casters_skipped") == 0.0);
+        CHECK(c.at("shadows.caster_instances") + c.at("shadows.casters_skipped") ==
+              all.report.counters.at("shadows.caster_instances"));
+        if (azimuth == 135.0f) CHECK(c.at("shadows.casters_skipped") > 0.0);
+        CHECK(relativeDifference(cut, all) < 1e-5);
+    }
+}
+
+TEST_CASE("gl: the sea draws only the grid segments that can be in view, with the image of the whole circle") {
+    Settings s = hills();
+    s.water.enabled = true;
+    s.water.level_m = 110.0f;  // floods the valleys between the hills
+    for (double pitch : {-8.0, -89.0}) {
+        CAPTURE(pitch);
+        ViewParams view = kGrazing;
+        view.pitch_deg = pitch;
+        s.water.sector_cull = true;
+        const Frame cut = render(s, view);
+        s.water.sector_cull = false;
+        const Frame whole = render(s, view);
+        const double segments = double(s.water.grid_segments);
+        CHECK(whole.report.counters.at("water.segments") == segments);
+        if (pitch > -80.0) {
+            CHECK(cut.report.counters.at("water.segments") < segments / 2.0);
+            CHECK(cut.report.counters.at("water.triangles") < whole.report.counters.at("water.triangles") / 2.0);
+        } else {
+            CHECK(cut.report.counters.at("water.segments") == segments);  // looking down: every direction is in view
+        }
+        CHECK(relativeDifference(cut, whole) < 1e-5);
+    }
 }

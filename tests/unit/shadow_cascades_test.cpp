@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace vista;
@@ -211,4 +212,42 @@ TEST_CASE("shadows: selecting with the caster frustum and culling by the view gi
             CHECK(culled.nodes[i].z == own.nodes[i].z);
         }
     }
+}
+
+TEST_CASE("shadows: a caster reaches a cascade's receivers exactly when its box swept away from the sun does") {
+    // Brute force: the box's points (a 5^3 lattice, corners included) moved along -sun down to
+    // the floor (9 steps, both ends included); the deepest view depth any of them reaches.
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int kept = 0, dropped = 0;
+    for (int n = 0; n < 400; ++n) {
+        const glm::dvec3 forward = glm::normalize(glm::dvec3(u(rng), 0.4 * u(rng), u(rng)));
+        const glm::dvec3 sun = glm::normalize(glm::dvec3(u(rng), 0.1 + std::abs(u(rng)), u(rng)));
+        const glm::dvec3 lo(400.0 * u(rng), -200.0 + 100.0 * u(rng), 400.0 * u(rng));
+        const glm::dvec3 hi = lo + glm::dvec3(10.0 + 90.0 * std::abs(u(rng)), 150.0 * std::abs(u(rng)), 10.0 + 90.0 * std::abs(u(rng)));
+        const double floor = lo.y - 100.0 * std::abs(u(rng)), min_depth = 500.0 * u(rng);
+        double deepest = -1e300;
+        for (int i = 0; i <= 4; ++i)
+            for (int j = 0; j <= 4; ++j)
+                for (int k = 0; k <= 4; ++k) {
+                    const glm::dvec3 p = lo + (hi - lo) * glm::dvec3(i, j, k) / 4.0;
+                    const double t_max = std::max(p.y - floor, 0.0) / sun.y;
+                    for (int s = 0; s <= 8; ++s) deepest = std::max(deepest, glm::dot(forward, p - sun * (t_max * s / 8.0)));
+                }
+        CAPTURE(n);
+        if (std::abs(deepest - min_depth) < 1e-6) continue;  // on the edge either answer is right
+        const bool reaches = casterReachesDepth(lo, hi, forward, sun, floor, min_depth);
+        CHECK(reaches == (deepest >= min_depth));
+        (reaches ? kept : dropped) += 1;
+    }
+    CHECK(kept > 50);
+    CHECK(dropped > 50);
+    // No floor known: a shadow pointing away along the view may reach any depth.
+    const glm::dvec3 forward(0.0, 0.0, -1.0), behind = glm::normalize(glm::dvec3(0.0, 1.0, 1.0));
+    const double none = -std::numeric_limits<double>::infinity();
+    CHECK(casterReachesDepth({-5, 0, -15}, {5, 10, -5}, forward, behind, none, 1e6));
+    // The sun ahead: the shadow points back towards the camera, the box alone decides.
+    const glm::dvec3 ahead = glm::normalize(glm::dvec3(0.0, 1.0, -1.0));
+    CHECK_FALSE(casterReachesDepth({-5, 0, -15}, {5, 10, -5}, forward, ahead, none, 15.5));
+    CHECK(casterReachesDepth({-5, 0, -15}, {5, 10, -5}, forward, ahead, none, 14.5));
 }
