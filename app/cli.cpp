@@ -19,6 +19,7 @@
 #include "app/scene.h"
 #include "app/light_placement.h"
 #include "app/scene_check.h"
+#include "app/sky_cmd.h"
 #include "terrain/terrain.h"
 #include "terrain/gen_heightmap.h"
 #include "app/terrain_cache_cmd.h"
@@ -464,6 +465,21 @@ int runCommand(int argc, char** argv) {
     bench_grass->add_option("--json", grass_json, "also write the results as JSON");
     bench_grass->add_flag("--force", grass_opts.force, "replace an existing --json file");
 
+    SceneOptions sky_cmd_scene;
+    SkyCliArgs sky_args;
+    CLI::App* sky_cmd = app.add_subcommand("sky", "sky radiance (linear sRGB and luminance, cd/m^2) for given geometries");
+    sky_cmd_scene.add(sky_cmd);
+    sky_cmd->add_option("--altitude-m", sky_args.altitude_m, "camera altitude above the ground (m)");
+    sky_cmd->add_option("--sun-zenith-deg", sky_args.sun_zenith_deg, "sun zenith angle, 0..180 deg");
+    sky_cmd->add_option("--view-zenith-deg", sky_args.view_zenith_deg, "view zenith angle, 0..180 deg");
+    sky_cmd->add_option("--view-azimuth-deg", sky_args.view_azimuth_deg, "view azimuth from the sun's, -360..360 deg");
+    sky_cmd->add_option("--in", sky_args.in, "CSV of geometries (header altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg)");
+    sky_cmd->add_option("--out", sky_args.out, "write the CSV here (default: stdout)");
+    sky_cmd->add_flag("--reference", sky_args.reference, "the spectral CPU reference instead of the GPU");
+    sky_cmd->add_flag("--ground", sky_args.ground, "add the sunlit ground where a ray meets the planet");
+    sky_cmd->add_flag("--force", sky_args.force, "replace an existing --out file");
+    sky_cmd->add_option("--backend", sky_args.backend, "osmesa (default) or egl")->check(CLI::IsMember({"osmesa", "egl"}));
+
     SceneOptions quality_scene;
     QualityCliOptions quality_opts;
     CLI::App* quality_cmd = app.add_subcommand(
@@ -653,6 +669,11 @@ int runCommand(int argc, char** argv) {
         grass_opts.backend = grass_backend == "egl" ? Backend::Egl : Backend::OSMesa;
         return runBenchGrass(isolateBenchScene("grass", s, benchKeptSections("grass"), benchFixedKeys("grass"), grass_scene.overrides),
                               grass_opts);
+    }
+    if (*sky_cmd) {
+        Settings s;
+        if (!sky_cmd_scene.load(s)) return 2;
+        return runSkyCli(s, sky_args);
     }
     if (*bench_sky) {
         Settings s;

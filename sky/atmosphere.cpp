@@ -10,6 +10,7 @@
 #include "renderer/bindings.h"
 #include "renderer/camera.h"
 #include "sky/atmosphere_reference.h"
+#include "sky/atmosphere_spectral.h"
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/geometric.hpp>
@@ -57,6 +58,7 @@ double lutSunElevation(const glm::dvec3& sun, const SkySettings& sky) {
 // std140 mirror of AtmosphereUniforms in sky/shaders/atmosphere.glsl.
 struct SkyAtmosphere::Uniforms {
     glm::vec4 radii, rayleigh, mie, mie_ext, ozone, misc, albedo, solar, sun, horizon, fog, aerial, moon, night;
+    glm::vec4 colour[3];
     glm::vec4 celestial[3];
     glm::ivec4 sizes, sizes2;
     glm::vec4 gl[16];
@@ -164,7 +166,7 @@ void SkyAtmosphere::setCamera(Uniforms& u, const AtmosphereParams& p, double alt
 }
 
 void SkyAtmosphere::upload(const Uniforms& u) {
-    static_assert(sizeof(Uniforms) == 576, "Uniforms must match the std140 block");
+    static_assert(sizeof(Uniforms) == 624, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
 }
@@ -201,6 +203,8 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
     u.night = glm::vec4(sky.stars ? sky.stars_intensity * sky.sun_illuminance : 0.0f, float(kMoonAlbedo),
                         sky.moon ? 1.0f : 0.0f,
                         float(kNightFloorLux / kSolarIlluminanceLux / std::numbers::pi) * sky.sun_illuminance);
+    const glm::dmat3 colour = skyColourMatrix(sun.y) * double(sky.sun_illuminance);
+    for (int i = 0; i < 3; ++i) u.colour[i] = glm::vec4(glm::vec3(colour[i]), 0.0f);
     const glm::dmat3 celestial = glm::transpose(celestialFromWorld(sky));  // rows of celestialFromWorld
     for (int i = 0; i < 3; ++i) u.celestial[i] = glm::vec4(glm::vec3(celestial[i]), 0.0f);
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};

@@ -2,6 +2,7 @@
 #include "sky/sky_reference_image.h"
 
 #include "sky/atmosphere.h"
+#include "sky/atmosphere_spectral.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/packing.hpp>
@@ -23,6 +24,9 @@ std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParam
     const glm::dmat4 inv(viewMatrices(view).inv_view_proj);
     const double pixel_rad = glm::radians(view.fov_deg) / view.height;
     const double disk_cos = std::cos(p.sun_angular_radius + 1.5 * pixel_rad);
+    // The sky pass's conversion of the in-scattered samples to linear sRGB (skyRgb() in
+    // sky/shaders/atmosphere.glsl); the sunlit ground keeps the samples under a white sun.
+    const glm::dmat3 colour = skyColourMatrix(sun.y);
     const int w = view.width, h = view.height;
     std::vector<glm::vec3> out(std::size_t(w) * std::size_t(h));
     auto row = [&](int y) {
@@ -33,7 +37,7 @@ std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParam
             glm::vec3& o = out[std::size_t(y) * std::size_t(w) + std::size_t(x)];
             ViewRayResult v =
                 integrateViewRay(p, camera, d, sun, std::numeric_limits<double>::infinity(), steps, &ms);
-            glm::dvec3 l = v.radiance;
+            glm::dvec3 l = colour * v.radiance;
             if (v.hits_ground) {
                 glm::dvec3 g = planetFromWorld(p, camera) + v.distance * d;
                 double mu_s = glm::dot(glm::normalize(g), sun);
@@ -44,7 +48,9 @@ std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParam
                 o = glm::vec3(std::numeric_limits<float>::quiet_NaN());
                 continue;
             }
-            o = glm::vec3(l * double(sky.sun_illuminance));
+            // The conversion can leave the gamut (a deep red horizon has a negative green); the
+            // sky pass clamps its output at 0.
+            o = glm::vec3(glm::max(l, glm::dvec3(0.0)) * double(sky.sun_illuminance));
         }
     };
     unsigned workers = std::max(1u, std::thread::hardware_concurrency());

@@ -12,7 +12,8 @@
 
 namespace vista {
 
-// Linear radiance per pixel (RGB, HDR units: transfer factor * sun_illuminance), top row
+// Linear radiance per pixel (RGB, HDR units: transfer factor * sun_illuminance, the sky's
+// in-scattering through skyColourMatrix() as the sky pass draws it), top row
 // first. Pixels within the sun disk (plus 1.5 px) are NaN: the reference has no disk.
 // The camera sits above the planet centre (as on the GPU): only its altitude counts.
 std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParams& view,

@@ -48,7 +48,7 @@ void main() {
         float r0 = length(entry);
         RaySums sums = integrateRay(r0, clamp(dot(entry, dir) / r0, -1.0, 1.0), clamp(dot(entry, a_sun.xyz) / r0, -1.0, 1.0),
                                     clamp(dot(dir, a_sun.xyz), -1.0, 1.0), t - t_start, a_sizes2.w, 0);
-        o_inscatter = vec4(clamp(sums.radiance * a_solar.xyz, vec3(0.0), vec3(60000.0)), 0.0);
+        o_inscatter = vec4(clamp(skyRgb(sums.radiance), vec3(0.0), vec3(60000.0)), 0.0);
         o_transmittance = vec4(clamp(sums.transmittance, vec3(0.0), vec3(1.0)), 1.0);
         return;
     }
@@ -62,7 +62,7 @@ void main() {
     vec3 s0 = vec3(0.0), tr0 = vec3(1.0), s1, tr1;
     if (k0 >= 0) fetchSlice(k0, v_uv, s0, tr0);
     fetchSlice(k1, v_uv, s1, tr1);
-    vec3 inscatter = mix(s0, s1, w) * a_solar.xyz;
+    vec3 inscatter = skyRgb(mix(s0, s1, w));
     vec3 transmittance = mix(tr0, tr1, w);
     o_inscatter = vec4(clamp(inscatter, vec3(0.0), vec3(60000.0)), 0.0);
     o_transmittance = vec4(clamp(transmittance, vec3(0.0), vec3(1.0)), 1.0);

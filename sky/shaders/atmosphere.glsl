@@ -26,6 +26,7 @@ layout(std140, binding = SKY_ATMOSPHERE_BLOCK) uniform AtmosphereUniforms {
     vec4 a_aerial;         // aerial-perspective volume: x depth reached (km), y froxels per side, z slices, w steps per slice
     vec4 a_moon;           // xyz unit vector towards the moon, w its angular radius (rad)
     vec4 a_night;          // x star intensity (HDR, 0: no stars), y moon albedo, z 1 to draw the moon, w airglow radiance
+    vec4 a_colour[3];      // xyz columns: the three samples to linear sRGB, HDR units (skyRgb)
     vec4 a_celestial[3];   // rows of the rotation from the world to the celestial frame (stars)
     ivec4 a_sizes;         // transmittance w, h, multiscatter size, sky-view w
     ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps
@@ -39,6 +40,11 @@ const float PI = 3.14159265358979;
 #endif
 
 float bottomR() { return a_radii.x; }
+
+// Sky radiance in HDR linear sRGB from the three monochromatic samples (transfer factors at
+// 680/550/440 nm) the LUTs hold: the conversion fitted against the spectral reference
+// (sky/atmosphere_spectral.h skyColourMatrix()) times the sun illuminance.
+vec3 skyRgb(vec3 samples) { return mat3(a_colour[0].xyz, a_colour[1].xyz, a_colour[2].xyz) * samples; }
 float topR() { return a_radii.y; }
 
 struct Medium {

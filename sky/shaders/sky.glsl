@@ -141,7 +141,7 @@ void main() {
             hits_ground = false;
         }
     }
-    radiance *= a_solar.xyz;
+    radiance = skyRgb(radiance);
     if (hits_ground) {
         // Sunlit ground seen through the atmosphere (no skylight on it).
         float mu_s_g = clamp((r0 * mu_s0 + len * nu) / R, -1.0, 1.0);

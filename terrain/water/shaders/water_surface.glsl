@@ -74,7 +74,7 @@ vec3 skyRadiance(vec3 dir) {
     vec2 h = dir.xz, s = a_sun.xz;
     float hl = dot(h, h), sl = dot(s, s);
     float cos_az = hl > 1e-12 && sl > 1e-12 ? dot(h, s) * inversesqrt(hl * sl) : 1.0;
-    return texture(u_sky_view, skyViewUv(above, cos_az)).rgb * a_solar.xyz;
+    return skyRgb(texture(u_sky_view, skyViewUv(above, cos_az)).rgb);
 }
 
 ivec2 texelOf(vec2 uv) {
