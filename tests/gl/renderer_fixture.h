@@ -26,6 +26,19 @@ namespace {
     return r;
 }
 
+// The terrain (and sky and sun shadows, as the caller leaves them) alone: no grass, sea, clouds,
+// local lights, objects, SSAO, TAA or debug grid, for tests that measure the terrain's own image.
+[[maybe_unused]] void terrainOnly(Settings& s) {
+    s.grass.enabled = false;
+    s.water.enabled = false;
+    s.clouds.enabled = false;
+    s.lights.enabled = false;
+    s.objects.enabled = false;
+    s.ssao.enabled = false;
+    s.taa.enabled = false;
+    s.debug.grid = false;
+}
+
 // 129x129 texels over 256 m (2 m texels): flat at 0 with a 40 m pillar of 5x5 texels (x, z in
 // [-4, 4] m; its walls slope to the ground from |x| = 4 to 6 m), written once per test file into
 // a temporary folder named dir_name. The sun and the lamp shadow tests cast it.

@@ -178,16 +178,9 @@ Settings crackScene() {
     s.terrain.tessellation.edge_px = 2.0f;
     s.terrain.tessellation.max_factor = 32.0f;
     s.terrain.tessellation.depth_m = 1.0f;
+    test::terrainOnly(s);
     s.sky.enabled = false;
-    s.grass.enabled = false;
-    s.water.enabled = false;
     s.shadows.enabled = false;
-    s.clouds.enabled = false;
-    s.lights.enabled = false;
-    s.objects.enabled = false;
-    s.ssao.enabled = false;
-    s.taa.enabled = false;
-    s.debug.grid = false;
     return s;
 }
 

@@ -68,16 +68,9 @@ Settings splatScene() {
     s.terrain.materials[0].albedo = (assets().dir / "pebbles.png").string();
     s.terrain.materials[0].tiling_m = 2.0f;
     s.terrain.view = TerrainView::Material;
+    test::terrainOnly(s);
     s.sky.enabled = false;
-    s.grass.enabled = false;
-    s.water.enabled = false;
     s.shadows.enabled = false;
-    s.clouds.enabled = false;
-    s.lights.enabled = false;
-    s.objects.enabled = false;
-    s.ssao.enabled = false;
-    s.taa.enabled = false;
-    s.debug.grid = false;
     return s;
 }
 

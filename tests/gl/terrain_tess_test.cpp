@@ -39,14 +39,7 @@ Settings displacedPlane() {
     s.terrain.tessellation.edge_px = 1.0f;
     s.terrain.tessellation.max_factor = 32.0f;
     s.terrain.tessellation.depth_m = 1.0f;
-    s.grass.enabled = false;
-    s.water.enabled = false;
-    s.clouds.enabled = false;
-    s.lights.enabled = false;
-    s.objects.enabled = false;
-    s.ssao.enabled = false;
-    s.taa.enabled = false;
-    s.debug.grid = false;
+    test::terrainOnly(s);
     return s;
 }
 
