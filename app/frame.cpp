@@ -41,6 +41,7 @@ std::vector<ProgramKey> allPrograms() {
     };
     for (const auto& file : skyPrograms()) programs.push_back({file, {}});
     for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
+    for (const auto& file : lampGlowPrograms()) programs.push_back({file, {}});
     programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO"}});
     programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_SUN_SHADOW"}});
     programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW"}});
@@ -697,6 +698,7 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
         sky_->addAerialPerspective(graph, rc, s.sky, scene);
         if (f.clouds) clouds_->addShellPass(graph, rc, *sky_, scene, f.cut);
     }
+    addLampGlowPass(graph, f, scene, report);
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
     if (s.weather.enabled && !f.shadow_view) {
@@ -709,6 +711,21 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
     } else {
         weather_.release();
     }
+}
+
+void FrameRenderer::addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTargets& scene, FrameReport& report) {
+    // The lamps' glow in fog over the fogged scene (renderer/lighting/lamp_glow.h): the lights of
+    // this frame (prepareFeatures animated them), where the air around them is dense enough.
+    const Settings& s = f.s;
+    const bool wanted = s.sky.enabled && s.lights.glow && s.lights.glow_max_lights > 0 && f.terrain && !f.shadow_view &&
+                        local_lights_ && scene.depth.valid();
+    if (!wanted || !lamp_glow_.use().prepare(local_lights_->lights(), s.lights, s.sky, f.view, f.rc.matrices, pre_exposure_)) {
+        lamp_glow_.release();
+        return;
+    }
+    lamp_glow_->addPass(graph, f.rc, scene);
+    report.counters["lights.glow"] = double(lamp_glow_->stats().glowing);
+    report.counters["lights.glow_dropped"] = double(lamp_glow_->stats().dropped);
 }
 
 void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
@@ -781,8 +798,8 @@ void FrameRenderer::execute(FrameGraph& graph, const FrameRequest& request, Fram
 
 template <class F>
 void FrameRenderer::forEachFeature(F&& f) const {
-    f(terrain_), f(grass_), f(sky_), f(clouds_), f(local_lights_), f(sun_shadows_), f(spot_shadows_), f(point_shadows_),
-        f(water_), f(objects_), f(weather_), f(taa_);
+    f(terrain_), f(grass_), f(sky_), f(clouds_), f(local_lights_), f(lamp_glow_), f(sun_shadows_), f(spot_shadows_),
+        f(point_shadows_), f(water_), f(objects_), f(weather_), f(taa_);
 }
 
 void FrameRenderer::reportAfterFrame(const Frame& f, FrameReport& report) const {

@@ -13,6 +13,7 @@
 #include "renderer/render_context.h"
 #include "renderer/shader_library.h"
 #include "renderer/transient_pool.h"
+#include "renderer/lighting/lamp_glow.h"
 #include "renderer/lighting/local_lights.h"
 #include "postfx/chain.h"
 #include "postfx/taa.h"
@@ -175,6 +176,8 @@ private:
     // What glass is lit by: the sun and sky, the local lights' forward lists, the sun's cascades.
     ForwardLight forwardLight(const Frame& f, const Shadows& shadows);
     // Motion vectors and TAA (and the velocity readback a test asks for).
+    // "lights.glow" over the fogged scene, when some light glows (else the feature is released).
+    void addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTargets& scene, FrameReport& report);
     void addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
                            FrameReport& report);
     // What a test reads of the scene besides the image: non-finite pixels, light heat, depth.
@@ -225,6 +228,7 @@ private:
     FeatureSlot<SkyAtmosphere> sky_{"sky.memory_bytes"};  // LUTs kept across frames
     FeatureSlot<Clouds> clouds_{"clouds.memory_bytes"};  // empty while [clouds] draws nothing
     FeatureSlot<LocalLights> local_lights_{"lights.memory_bytes"};  // empty while the scene has no local lights
+    FeatureSlot<LampGlow> lamp_glow_{"lights.glow_memory_bytes"};  // empty while no light glows (clear air, no lights)
     std::pair<bool, float> light_water_{false, 0.0f};  // [water] enabled, level_m the lights were placed over
     double pre_exposure_ = 1.0;  // this frame's (sky/night_light.h), set by render()
     FeatureSlot<SunShadows> sun_shadows_{"shadows.memory_bytes"};  // empty while the sun casts no shadows

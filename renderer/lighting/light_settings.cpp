@@ -135,6 +135,11 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     v.field({"hash_node_m", "m", "leaf node size of the hashed light octree; 0 = half the mean radius"}, s.hash_node_m, 0.0f, 1.0e5f);
     v.field({"hash_memory_mb", "MiB", "memory bound of the hashed tables; beyond it nodes coarsen"}, s.hash_memory_mb, 1.0f, 65536.0f);
     v.field({"hash_slack", "", "extra hash table room for incremental updates (fraction)"}, s.hash_slack, 0.0f, 4.0f);
+    v.field({"glow", "",
+             "glow around the lights in fog: their light scattered once by the air and [sky] height_fog between the "
+             "camera and the surface (only where the medium's optical depth across a light's radius reaches 0.001)"},
+            s.glow);
+    v.field({"glow_max_lights", "", "lights that glow at most per frame, the brightest on screen"}, s.glow_max_lights, 0, 1024);
     v.choice({"animation", "", "light motion: none, circle (horizontal) or bob (vertical)"}, s.animation.motion, motions);
     v.field({"animation_amplitude_m", "m", "circle radius or bob height"}, s.animation.amplitude_m, 0.0f, 1.0e4f);
     v.field({"animation_period_s", "s", "time of one loop"}, s.animation.period_s, 0.01f, 1.0e6f);

@@ -81,6 +81,8 @@ struct LightsSettings {
     float hash_node_m = 0.0f;       //!< m, leaf node size of the hashed light octree, 0..1e5; 0 = half the mean light radius
     float hash_memory_mb = 256.0f;  //!< MiB of GPU tables + index list, 1..65536; beyond it the node size doubles until it fits
     float hash_slack = 0.25f;       //!< extra hash-table room kept for incremental updates, fraction 0..4
+    bool glow = true;               //!< glow around lights in fog (single scattering, renderer/lighting/lamp_glow.h); only where the medium is dense enough
+    int glow_max_lights = 32;       //!< lights that glow at most, the brightest on screen, 0..1024
     LightAnimation animation;       //!< animation = none|circle|bob, animation_amplitude_m, animation_period_s, animation_fraction, animation_seed
     std::vector<NamedLight> lights;          //!< light.NAME keys
     std::vector<NamedLightVolume> volumes;   //!< volume.NAME keys

@@ -70,6 +70,14 @@ std::uint64_t sceneLightCount(const LightsSettings& s) {
     return n;
 }
 
+bool sphereMeetsView(const glm::dvec3& center_rel, double radius, const ViewParams& view, const ViewMatrices& m) {
+    const double ty = std::tan(glm::radians(view.fov_deg) * 0.5), tx = ty * double(view.width) / double(view.height);
+    const double kx = std::sqrt(1.0 + tx * tx), ky = std::sqrt(1.0 + ty * ty);
+    const glm::dvec3 c{glm::dot(center_rel, m.right), glm::dot(center_rel, m.up), glm::dot(center_rel, m.forward)};  // z: depth
+    const double r = radius * (1.0 + 1e-4) + 1e-4 * glm::length(center_rel);
+    return !(c.z < view.near_m - r || std::abs(c.x) > c.z * tx + r * kx || std::abs(c.y) > c.z * ty + r * ky);
+}
+
 std::vector<std::string> localLightPrograms() {
     return {"renderer/lighting/shaders/light_cull.glsl", "renderer/lighting/shaders/light_shade.glsl"};
 }
@@ -189,8 +197,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
     // the view frustum (no other can light a visible point); naive loops over all by definition,
     // and hashed's octree indexes all of them.
     const bool screen_culled = stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered;
-    const double ty = std::tan(glm::radians(view.fov_deg) * 0.5), tx = ty * double(view.width) / double(view.height);
-    const double kx = std::sqrt(1.0 + tx * tx), ky = std::sqrt(1.0 + ty * ty);
+    const double ty = std::tan(glm::radians(view.fov_deg) * 0.5);
     // A sphere at depth z > r spans about r / z * focal pixels in radius: below min_screen_px it
     // lights at most a few pixels, faintly (its falloff reaches 0 at the radius), and would still
     // cost a test in every tile.
@@ -209,9 +216,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         const glm::dvec3 rel = world_spheres_[i].center - view.position;
         const glm::dvec3 c{glm::dot(rel, m.right), glm::dot(rel, m.up), glm::dot(rel, m.forward)};  // z: depth
         const double r = world_spheres_[i].radius * (1.0 + 1e-4) + 1e-4 * glm::length(rel);
-        if (world_spheres_[i].radius <= 0.0 || c.z < view.near_m - r || std::abs(c.x) > c.z * tx + r * kx ||
-            std::abs(c.y) > c.z * ty + r * ky)
-            continue;
+        if (world_spheres_[i].radius <= 0.0 || !sphereMeetsView(rel, world_spheres_[i].radius, view, m)) continue;
         if (min_px > 0.0 && c.z > r && r * focal_px < min_px * (c.z - r)) {  // r / (z - r): the widest it can look
             ++stats_.skipped;
             continue;

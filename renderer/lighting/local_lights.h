@@ -68,6 +68,10 @@ inline constexpr std::uint32_t kLightChunk = 32768;
 // [lights] is disabled.
 std::uint64_t sceneLightCount(const LightsSettings& s);
 
+// Whether a sphere (camera-relative centre, radius in m) meets the view frustum (no far plane),
+// padded by 1e-4 of the radius and of the distance so that rounding never drops a light.
+bool sphereMeetsView(const glm::dvec3& center_rel, double radius, const ViewParams& view, const ViewMatrices& m);
+
 // Every program the local lights use (for FrameRenderer::allPrograms()).
 std::vector<std::string> localLightPrograms();
 

@@ -79,7 +79,7 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
     // Every memory counter adds up to the total.
     double parts = counter(base.report, "gpu.transient_bytes");
     for (const char* c : {"terrain.memory_bytes", "grass.memory_bytes", "sky.memory_bytes", "clouds.memory_bytes",
-                          "lights.memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "shadows.point_memory_bytes", "water.memory_bytes",
+                          "lights.memory_bytes", "lights.glow_memory_bytes", "shadows.memory_bytes", "shadows.spot_memory_bytes", "shadows.point_memory_bytes", "water.memory_bytes",
                           "weather.memory_bytes", "postfx.memory_bytes", "objects.memory_bytes"})
         parts += std::max(counter(base.report, c), 0.0);
     CHECK(parts <= base.memory);
@@ -104,6 +104,7 @@ TEST_CASE("gl: each feature switched off leaves its passes out and frees its GPU
          [](FrameRenderer& r) { return r.sunShadows() == nullptr; }},
         {"lights", [](Settings& s) { s.lights.enabled = false; }, {"lights", "shadows.spot_atlas"}, "lights.memory_bytes",
          [](FrameRenderer& r) { return r.localLights() == nullptr && r.spotShadows() == nullptr; }},
+        {"lamp glow", [](Settings& s) { s.lights.glow = false; }, {"lights.glow"}, "lights.glow_memory_bytes", nullptr},
         {"spot shadows", [](Settings& s) { s.shadows.spot_enabled = false; }, {"shadows.spot_atlas"},
          "shadows.spot_memory_bytes", [](FrameRenderer& r) { return r.spotShadows() == nullptr; }},
         {"water", [](Settings& s) { s.water.enabled = false; }, {"water"}, "water.memory_bytes",
