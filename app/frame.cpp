@@ -813,6 +813,8 @@ void FrameRenderer::reportAfterFrame(const Frame& f, FrameReport& report) const 
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
     const SkySettings& sky = f.s.sky;
     report.counters["sky.pre_exposure"] = pre_exposure_;
+    if (f.s.exposure.enabled && f.s.exposure.mode == ExposureMode::Camera)
+        report.counters["postfx.exposure.ev100"] = cameraEv100(f.s);
     if (f.s.lens_flare.enabled) report.counters["postfx.lens_flare.sun_visibility"] = f.rc.sun_visibility;
     if (sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
     report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));

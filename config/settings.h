@@ -331,10 +331,14 @@ struct PostfxSettings {
                                   PostEffect::Grade,      PostEffect::NightVision, PostEffect::Fxaa};
 };
 
-enum class ExposureMode : int { Manual, Auto };
+enum class ExposureMode : int { Manual, Auto, Camera };
 
 //! Exposure: a scale 2^ev (manual), or one that brings the metered average luminance to middle
-//! grey (0.18) times 2^ev (auto), metered from a log-luminance histogram and adapted over time.
+//! grey (0.18) times 2^ev (auto), metered from a log-luminance histogram and adapted over time,
+//! or a physical camera's (camera): EV100 = log2(N^2 / t * 100 / S) from the lens's f-number N
+//! ([postfx.dof] f_stop), the shutter time t ([postfx.motion_blur] shutter_deg / 360 / frame_rate)
+//! and the sensitivity S (iso), whether or not depth of field and motion blur are on; a luminance
+//! of 1.2 * 2^EV100 cd/m^2 (the sensor's saturation, ISO 12232) maps to 1, times 2^ev.
 struct ExposureSettings {
     bool enabled = true;
     ExposureMode mode = ExposureMode::Auto;
@@ -348,6 +352,7 @@ struct ExposureSettings {
     float high_percent = 95.0f;   //!< auto: pixels above this percentile left out (highlights), 1..100
     float speed_up = 3.0f;        //!< auto: adaptation rate towards a brighter scene, stops settle by e per 1/rate s, 0.01..100
     float speed_down = 1.0f;      //!< auto: adaptation rate towards a darker scene, 1/s, 0.01..100
+    float iso = 100.0f;           //!< camera: sensitivity S (ISO arithmetic), 1..1e6
 };
 
 enum class Tonemapper : int { Reinhard, Aces, Clamp, Agx };

@@ -53,6 +53,8 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
                     // cd/m^2 per HDR unit of the light itself (the image holds it times the pre-exposure).
                     exposure = auto_exposure_.use().addPasses(graph, rc, image, s.exposure, dt, reset,
                                                               rc.cd_per_value * rc.pre_exposure);
+                } else if (s.exposure.mode == ExposureMode::Camera) {
+                    exposure = cameraExposure(s.exposure, cameraEv100(s), rc.cd_per_value);  // cd/m^2 as rendered
                 } else {
                     exposure = manualExposure(s.exposure);
                     exposure.manual /= float(rc.pre_exposure);  // a fixed exposure of the light itself
@@ -132,6 +134,11 @@ InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& l
         lut_ = {lut_texture_.id(), cube->size, cube->domain_min, cube->domain_max};
     }
     return errors;
+}
+
+double cameraEv100(const Settings& s) {
+    const double shutter_s = double(s.motion_blur.shutter_deg) / 360.0 / double(s.motion_blur.frame_rate);
+    return ev100(double(s.dof.f_stop), shutter_s, double(s.exposure.iso));
 }
 
 std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {

@@ -24,6 +24,14 @@ postfx::ExposureState AutoExposure::read() const {
 
 ExposureInput manualExposure(const ExposureSettings& s) { return {true, std::exp2(s.ev), {}}; }
 
+double ev100(double f_stop, double shutter_s, double iso) {
+    return std::log2(f_stop * f_stop / std::max(shutter_s, 1e-9) * 100.0 / std::max(iso, 1e-9));
+}
+
+ExposureInput cameraExposure(const ExposureSettings& s, double ev100_value, double cd_per_value) {
+    return {true, float(std::exp2(double(s.ev)) * cd_per_value / (1.2 * std::exp2(ev100_value))), {}};
+}
+
 ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                       const ExposureSettings& s, double dt_s, bool reset, double cd_per_unit) {
     struct HistogramData {

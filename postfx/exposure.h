@@ -41,6 +41,12 @@ private:
 };
 
 ExposureInput manualExposure(const ExposureSettings& s);
+// A physical camera's exposure value at ISO 100: log2(N^2 / t * 100 / S), f-number N, shutter
+// time t (s), sensitivity S (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", 4.5).
+double ev100(double f_stop, double shutter_s, double iso);
+// The camera's exposure (ExposureMode::Camera): the luminance 1.2 * 2^EV100 cd/m^2 maps to 1,
+// times 2^ev; cd_per_value converts the image's values to cd/m^2 (RenderContext::cd_per_value).
+ExposureInput cameraExposure(const ExposureSettings& s, double ev100_value, double cd_per_value);
 
 // "postfx.exposure.apply": image times the pending exposure, same format.
 TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,

@@ -1023,3 +1023,28 @@ TEST_CASE("gl: an identity 3D LUT changes nothing, an inverting one inverts") {
     CHECK(pixel(out, w, 10, 20, 0) == doctest::Approx(1.0f - 10.0f / 63.0f).epsilon(1e-3));
     CHECK(pixel(out, w, 10, 20, 2) == doctest::Approx(0.7f).epsilon(1e-3));
 }
+
+TEST_CASE("gl: camera exposure: a luminance of 1.2 * 2^EV100 cd/m^2 maps to 1 (sunny 16: f/16, 1/100 s, ISO 100)") {
+    test::glContext();
+    Bench bench;
+    Settings s;
+    s.postfx.order = {PostEffect::Exposure};  // then the clamp encode: the output is the exposed value, encoded
+    s.exposure.mode = ExposureMode::Camera;
+    s.dof.f_stop = 16.0f;               // the lens, whether or not depth of field is on
+    s.motion_blur.shutter_deg = 180.0f;  // 180 deg at 50 frames a second: 1/100 s
+    s.motion_blur.frame_rate = 50.0f;
+    s.exposure.iso = 100.0f;
+    const double ev = cameraEv100(s);
+    CHECK(ev == doctest::Approx(std::log2(16.0 * 16.0 * 100.0)));
+    // A value whose luminance is a tenth of the sensor's saturation comes out as 0.1.
+    const double cd_per_value = luxPerHdrUnit(s.sky.sun_illuminance);
+    const float value = float(0.1 * 1.2 * std::exp2(ev) / cd_per_value);
+    std::vector<float> out = bench.chainRun(uniform(16, 9, value), 16, 9, s);
+    CHECK(pixel(out, 16, 8, 4) == doctest::Approx(srgb(0.1f)).epsilon(0.01));
+    CHECK_FALSE(has(postfxPasses(bench.executed), "postfx.exposure.histogram"));  // nothing metered
+    // Two stops more light (ISO 400) double the value twice; compensation (ev) adds to it.
+    s.exposure.iso = 400.0f;
+    s.exposure.ev = -1.0f;
+    out = bench.chainRun(uniform(16, 9, value), 16, 9, s);
+    CHECK(pixel(out, 16, 8, 4) == doctest::Approx(srgb(0.2f)).epsilon(0.01));
+}

@@ -59,6 +59,11 @@ TEST_CASE("postfx: every effect section has enabled and ranged parameters") {
     CHECK_FALSE(s.fxaa.enabled);
     CHECK(applyOverride("postfx.bloom.levels=11", s).size() == 1);
     CHECK(applyOverride("postfx.exposure.speed_up=0", s).size() == 1);
+    CHECK(applyOverride("postfx.exposure.mode=camera", s).empty());
+    CHECK(s.exposure.mode == ExposureMode::Camera);
+    CHECK(applyOverride("postfx.exposure.iso=400", s).empty());
+    CHECK(applyOverride("postfx.exposure.iso=0", s).size() == 1);  // names the key and the range
+    CHECK(applyOverride("postfx.exposure.mode=manual", s).empty());
     const std::string text = saveIniString(s);
     for (const char* section :
          {"[postfx]", "[postfx.exposure]", "[postfx.tonemap]", "[postfx.bloom]", "[postfx.fxaa]", "[postfx.grade]", "[postfx.ssao]"})
