@@ -134,8 +134,8 @@ InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& l
     return errors;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+ProgramList postfxPrograms() {
+    ProgramList programs;
     for (auto list :
          {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
           motionBlurPrograms(), lensFlarePrograms(), scotopicPrograms()})

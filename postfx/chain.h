@@ -64,6 +64,6 @@ private:
 };
 
 // Every program variant the chain can use.
-std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms();
+ProgramList postfxPrograms();
 
 }  // namespace vista

@@ -46,6 +46,6 @@ ExposureInput manualExposure(const ExposureSettings& s);
 TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                    const ExposureInput& exposure);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> exposurePrograms();
+ProgramList exposurePrograms();
 
 }  // namespace vista

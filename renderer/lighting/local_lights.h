@@ -68,8 +68,8 @@ inline constexpr std::uint32_t kLightChunk = 32768;
 // [lights] is disabled.
 std::uint64_t sceneLightCount(const LightsSettings& s);
 
-// Every program the local lights use (for FrameRenderer::allPrograms()).
-std::vector<std::string> localLightPrograms();
+// Every variant of "lights.cull" and "lights.shade" (light_variants.h, for FrameRenderer::allPrograms()).
+ProgramList localLightPrograms();
 
 struct LocalLightStats {
     std::uint64_t count = 0;        // lights this frame
