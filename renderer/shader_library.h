@@ -7,7 +7,7 @@
 // programs and keeps the old program when the new one fails.
 // Listed variants: once given the list of every variant the renderer may request
 // (FrameRenderer: allPrograms()), a request outside it is reported once (production) or
-// throws (the tests set UnlistedProgram::Fail in tests/main.cpp), so a reachable variant
+// throws (the GL tests set UnlistedProgram::Fail: tests/gl/gl_fixture.h), so a reachable variant
 // cannot go untested by the shader test, which compiles the whole list.
 #pragma once
 
@@ -41,7 +41,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::filesyst
 // What a request for a variant outside the library's list does.
 enum class UnlistedProgram {
     Log,   // compile it, and say so once on stderr (production)
-    Fail,  // throw std::logic_error naming the variant (the tests)
+    Fail,  // throw std::logic_error naming the variant, and id() throws on a failed compile (the tests)
 };
 
 class ShaderLibrary {
@@ -80,7 +80,7 @@ public:
     // Programs built so far, failed ones too (each variant once; reloads not counted).
     int compiled() const { return compiled_; }
     UnlistedProgram unlisted = unlisted_default;
-    // Every new library's `unlisted`: Log, or Fail where the tests set it (tests/main.cpp).
+    // Every new library's `unlisted`: Log, or Fail once the GL tests' context exists (tests/gl/gl_fixture.h).
     static inline UnlistedProgram unlisted_default = UnlistedProgram::Log;
 
     // Checks tracked files at most every poll_interval; recompiles programs whose files
