@@ -77,10 +77,10 @@ int runBenchSky(const BenchScene& isolated, const BenchSkyOptions& o) {
     FrameRenderer renderer(vistaRoot());
     // What this bench measures: the sky and the copy that sets the cost unit (the rest of the
     // frame compiles on first use).
-    std::vector<std::string> programs = skyPrograms();
-    programs.push_back("renderer/shaders/copy.glsl");
-    for (const std::string& file : programs)
-        if (!renderer.shaders().get(file)) error += renderer.shaders().lastError();
+    ProgramList programs = skyPrograms();
+    programs.push_back({"renderer/shaders/copy.glsl", {}});
+    for (const ProgramKey& key : programs)
+        if (!renderer.shaders().get(key)) error += renderer.shaders().lastError();
     if (!error.empty()) {
         std::fprintf(stderr, "vista: shader compilation failed:\n%s", error.c_str());
         return 1;

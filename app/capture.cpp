@@ -176,7 +176,6 @@ CaptureResult runCapture(const CaptureJob& job) {
     auto context = createContext(job.backend, options, error);
     if (!context) return stop(1, error);
     FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return stop(1, "shader compilation failed:\n" + error);
     errors = renderer.prepare(s);
     if (!errors.empty()) {
         printErrors(errors);
@@ -228,6 +227,16 @@ CaptureResult runCapture(const CaptureJob& job) {
     Progress progress(int(todo.size()), job.write_images ? "capture" : "bench");
     const std::vector<FrameSpan> runs = consecutiveRuns(todo);
     const int settle = job.write_images ? c.settle_frames : job.warmup_frames;
+    // Programs compile on first use, so a capture compiles the variants its scene uses, not the
+    // whole list (allPrograms()). One unwritten frame compiles them before any timing starts (the
+    // runs' resetHistory() forgets it); a compile error there, or in a later frame that needs
+    // another variant, stops the capture before its image is written.
+    auto shaderFailure = [&] {
+        std::string failed = renderer.programErrors();
+        return failed.empty() ? std::optional<CaptureResult>() : stop(1, "shader compilation failed:\n" + failed);
+    };
+    if (!runs.empty()) renderFrame(runs.front().first - settle, false);
+    if (auto failed = shaderFailure()) return *failed;
     int done = 0;
     for (const FrameSpan& run : runs) {
         // Every run starts from a fresh history, sequential runs too: frame k then depends on
@@ -242,6 +251,7 @@ CaptureResult runCapture(const CaptureJob& job) {
             const auto start = std::chrono::steady_clock::now();
             const std::uint64_t index = renderer.frameIndex();
             FrameReport report = renderFrame(frame, &run == &runs.back() && frame + 1 == run.end);
+            if (auto failed = shaderFailure()) return *failed;
             const double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
             stats.executed = report.executed;

@@ -32,50 +32,17 @@
 
 namespace vista {
 
-std::vector<ProgramKey> allPrograms() {
-    std::vector<ProgramKey> programs = {
+ProgramList allPrograms() {
+    ProgramList programs = {
         {"renderer/shaders/copy.glsl", {}},
         {"renderer/shaders/grid.glsl", {}},
         {"renderer/shaders/debug_view.glsl", {}},
         {"renderer/shaders/nonfinite.glsl", {}},
     };
-    for (const auto& file : skyPrograms()) programs.push_back({file, {}});
-    for (const auto& file : lightingPrograms()) programs.push_back({file, {}});
-    for (const auto& file : lampGlowPrograms()) programs.push_back({file, {}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_SUN_SHADOW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"SHADOW_TERM_VIEW"}});
-    for (auto& [file, defines] : shadowPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : cloudPrograms()) programs.push_back({file, defines});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_CLOUD_SHADOW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_CASCADE_VIEW"}});
-    programs.push_back({"renderer/lighting/shaders/sun.glsl", {"HAS_AO", "HAS_CLOUD_SHADOW", "HAS_SUN_SHADOW", "SHADOW_TERM_VIEW"}});
-    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT"}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS"}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS"}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_POINT_SHADOWS"}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "HAS_SPOT_SHADOWS", "HAS_POINT_SHADOWS"}});
-        programs.push_back({"renderer/lighting/shaders/light_shade.glsl", {method, "COUNT_LIGHTS", "LIGHT_HEAT", "HAS_SPOT_SHADOWS", "HAS_POINT_SHADOWS"}});
-    }
-    for (const char* method : {"LIGHTS_TILED", "LIGHTS_CLUSTERED"}) {
-        programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method}});
-        programs.push_back({"renderer/lighting/shaders/light_cull.glsl", {method, "LIGHTS_FORWARD"}});
-    }
-    for (auto& [file, defines] : postfxPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : taaPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : velocityPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : terrainPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : grassPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : weatherPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : waterPrograms()) programs.push_back({file, defines});
-    for (auto& [file, defines] : objectPrograms()) programs.push_back({file, defines});
+    for (const ProgramList& list : {skyPrograms(), lightingPrograms(), localLightPrograms(), lampGlowPrograms(), shadowPrograms(), cloudPrograms(),
+                                    postfxPrograms(), taaPrograms(), velocityPrograms(), terrainPrograms(), grassPrograms(),
+                                    weatherPrograms(), waterPrograms(), objectPrograms()})
+        appendPrograms(programs, list);
     return programs;
 }
 
@@ -83,19 +50,25 @@ FrameRenderer::FrameRenderer(std::filesystem::path root)
     : shaders_(std::move(root)),
       empty_vao_(gl::createVertexArray("empty (attribute-less draws)")),
       frame_uniforms_(gl::Buffer::create(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "frame uniforms")) {
+    shaders_.setListed(allPrograms());
     const GLubyte* name = glGetString(GL_RENDERER);
     timers_.setMode(timerModeFor(name ? reinterpret_cast<const char*>(name) : ""));
 }
 
 bool FrameRenderer::compilePrograms(std::string& errors) {
     errors.clear();
-    for (const auto& p : allPrograms())
-        if (!shaders_.get(p.file, p.defines)) {
-            // One program's error per line: ~90 failing programs were one 8 KB line.
-            errors += shaders_.lastError();
-            if (!errors.empty() && errors.back() != '\n') errors += '\n';
-        }
+    for (const ProgramKey& p : allPrograms()) shaders_.get(p);
+    errors = programErrors();
     return errors.empty();
+}
+
+std::string FrameRenderer::programErrors() const {
+    std::string out;  // one program's error per line: ~90 failing programs were one 8 KB line
+    for (const std::string& e : shaders_.errors()) {
+        out += e;
+        if (!out.empty() && out.back() != '\n') out += '\n';
+    }
+    return out;
 }
 
 InputErrors FrameRenderer::prepare(const Settings& s) {
@@ -811,6 +784,10 @@ void FrameRenderer::reportAfterFrame(const Frame& f, FrameReport& report) const 
         report.counters["postfx.memory_bytes"] = double(postfx);
     report.counters["gpu.transient_bytes"] = double(pool_.bytes());
     report.counters["gpu.memory_bytes"] = double(gpuMemoryBytes());
+    // Programs built so far (each variant once, on first use unless compilePrograms() ran) and
+    // the requests outside allPrograms() (0 unless a variant struct misses a reachable variant).
+    report.counters["shaders.compiled"] = double(shaders_.compiled());
+    report.counters["shaders.unlisted"] = double(shaders_.unlistedRequests().size());
     const SkySettings& sky = f.s.sky;
     report.counters["sky.pre_exposure"] = pre_exposure_;
     if (f.s.exposure.enabled && f.s.exposure.mode == ExposureMode::Camera)

@@ -38,13 +38,10 @@
 
 namespace vista {
 
-struct ProgramKey {
-    std::string file;
-    std::vector<std::string> defines;
-};
-
-// Every program variant the renderer can use: compiled up front and by the tests.
-std::vector<ProgramKey> allPrograms();
+// Every program variant the renderer can request: the concatenation of each feature's
+// enumeration (its variant structs' all()). The shader library refuses anything else in the
+// tests; the shader test compiles every entry.
+ProgramList allPrograms();
 
 // What the caller wants out of a frame besides rendering it.
 struct FrameRequest {
@@ -84,8 +81,13 @@ public:
     // Needs a current GL context. root is where shaders are found.
     explicit FrameRenderer(std::filesystem::path root);
 
-    // Compiles every program; false with the errors (file:line) on failure.
+    // Compiles every listed program (allPrograms()); false with the errors (file:line) on
+    // failure. Without it programs compile on first use: captures and tests compile only the
+    // variants their scenes use; the window and the benches compile all up front, so no setting
+    // changed later and no timed frame waits for a compile.
     bool compilePrograms(std::string& errors);
+    // The errors of the programs compiled so far that failed, one program's per line ("": none).
+    std::string programErrors() const;
 
     // Loads (or drops) what the settings need: the terrain when [terrain] is enabled. Cheap
     // when nothing changed; call before rendering and after settings change. Returns the

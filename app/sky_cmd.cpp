@@ -63,8 +63,8 @@ std::vector<SkyColour> gpuRadiance(const Settings& scene, const SkyCommandOption
     auto context = createContext(o.backend, ContextOptions{kSize, kSize, false, false, false, false, "sky"}, error);
     if (!context) return out;
     FrameRenderer renderer(vistaRoot());
-    for (const std::string& file : skyPrograms())
-        if (!renderer.shaders().get(file)) error += renderer.shaders().lastError();
+    for (const ProgramKey& key : skyPrograms())
+        if (!renderer.shaders().get(key)) error += renderer.shaders().lastError();
     if (!error.empty()) return out;
     std::vector<std::uint16_t> hdr;
     FrameRequest request;

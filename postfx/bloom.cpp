@@ -27,7 +27,7 @@ TextureHandle addUpPass(FrameGraph& graph, const RenderContext& rc, const std::s
             bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (composite) defines.push_back("BLOOM_COMPOSITE");
-            GLuint program = rc.shaders.get("postfx/shaders/bloom_up.glsl", defines)->id();
+            GLuint program = rc.shaders.id("postfx/shaders/bloom_up.glsl", defines);
             glUseProgram(program);
             glProgramUniform1f(program, 0, mix);
             glBindTextureUnit(0, ctx.texture(d.a));
@@ -61,7 +61,7 @@ TextureHandle addBloomPasses(FrameGraph& graph, const RenderContext& rc, Texture
                 bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
                 std::vector<std::string> defines;
                 if (first) defines.push_back("BLOOM_FIRST");
-                GLuint program = rc.shaders.get("postfx/shaders/bloom_down.glsl", defines)->id();
+                GLuint program = rc.shaders.id("postfx/shaders/bloom_down.glsl", defines);
                 glUseProgram(program);
                 glProgramUniform2f(program, 0, 1.0f / float(in.width), 1.0f / float(in.height));
                 glProgramUniform1f(program, 1, clamp);
@@ -78,7 +78,7 @@ TextureHandle addBloomPasses(FrameGraph& graph, const RenderContext& rc, Texture
     return addUpPass(graph, rc, "postfx.bloom.composite", up, image, s.intensity, true);
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> bloomPrograms() {
+ProgramList bloomPrograms() {
     return {{"postfx/shaders/bloom_down.glsl", {}},
             {"postfx/shaders/bloom_down.glsl", {"BLOOM_FIRST"}},
             {"postfx/shaders/bloom_up.glsl", {}},

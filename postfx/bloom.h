@@ -15,6 +15,6 @@ namespace vista {
 
 TextureHandle addBloomPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const BloomSettings& s);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> bloomPrograms();
+ProgramList bloomPrograms();
 
 }  // namespace vista

@@ -141,8 +141,8 @@ double cameraEv100(const Settings& s) {
     return ev100(double(s.dof.f_stop), shutter_s, double(s.exposure.iso));
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+ProgramList postfxPrograms() {
+    ProgramList programs;
     for (auto list :
          {tonemapPrograms(), exposurePrograms(), bloomPrograms(), fxaaPrograms(), gradePrograms(), ssaoPrograms(), dofPrograms(),
           motionBlurPrograms(), lensFlarePrograms(), scotopicPrograms()})

@@ -64,7 +64,7 @@ private:
 };
 
 // Every program variant the chain can use.
-std::vector<std::pair<std::string, std::vector<std::string>>> postfxPrograms();
+ProgramList postfxPrograms();
 
 // The camera's EV100 for [postfx.exposure] mode = camera: the lens's [postfx.dof] f_stop, the
 // shutter time [postfx.motion_blur] shutter_deg / 360 / frame_rate and [postfx.exposure] iso.

@@ -69,7 +69,7 @@ TextureHandle addDofCocPass(FrameGraph& graph, const RenderContext& rc, TextureH
             bindTarget(rc.device.framebuffer({ctx.texture(d.coc)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (automatic) defines.push_back("DOF_AUTOFOCUS");
-            GLuint program = rc.shaders.get("postfx/shaders/dof_coc.glsl", defines)->id();
+            GLuint program = rc.shaders.id("postfx/shaders/dof_coc.glsl", defines);
             glUseProgram(program);
             glProgramUniform4f(program, 0, l.focal_m, l.f_stop, l.sensor_m, l.height_px);
             glProgramUniform4f(program, 1, manual, near_m, max_coc, half_focal);
@@ -98,7 +98,7 @@ TextureHandle DepthOfField::addPasses(FrameGraph& graph, const RenderContext& rc
                 d.state = b.write(state);
             },
             [&rc, dt, rate, near_m, max_diopters, reset](const FocusData& d, PassContext& ctx) {
-                GLuint program = rc.shaders.get("postfx/shaders/dof_focus.glsl")->id();
+                GLuint program = rc.shaders.id("postfx/shaders/dof_focus.glsl");
                 glUseProgram(program);
                 glProgramUniform4f(program, 0, dt, rate, near_m, max_diopters);
                 glProgramUniform1f(program, 1, reset ? 1.0f : 0.0f);
@@ -125,7 +125,7 @@ TextureHandle DepthOfField::addPasses(FrameGraph& graph, const RenderContext& rc
             [&rc, mode, reach](const TileData& d, PassContext& ctx) {
                 const TextureDesc& desc = ctx.desc(d.out);
                 bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-                GLuint program = rc.shaders.get("postfx/shaders/dof_tiles.glsl")->id();
+                GLuint program = rc.shaders.id("postfx/shaders/dof_tiles.glsl");
                 glUseProgram(program);
                 glProgramUniform2i(program, 0, mode, reach);
                 glBindTextureUnit(0, ctx.texture(d.in));
@@ -151,7 +151,7 @@ TextureHandle DepthOfField::addPasses(FrameGraph& graph, const RenderContext& rc
         [&rc, params](const GatherData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/dof_gather.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/dof_gather.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, params.x, params.y, params.z, params.w);
             glBindTextureUnit(0, ctx.texture(d.coc));
@@ -160,7 +160,7 @@ TextureHandle DepthOfField::addPasses(FrameGraph& graph, const RenderContext& rc
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> dofPrograms() {
+ProgramList dofPrograms() {
     return {{"postfx/shaders/dof_focus.glsl", {}},
             {"postfx/shaders/dof_coc.glsl", {}},
             {"postfx/shaders/dof_coc.glsl", {"DOF_AUTOFOCUS"}},

@@ -61,6 +61,6 @@ private:
 TextureHandle addDofCocPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, TextureHandle depth,
                             const DofSettings& s, BufferHandle focus);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> dofPrograms();
+ProgramList dofPrograms();
 
 }  // namespace vista

@@ -47,7 +47,7 @@ ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc
             const TextureDesc& desc = ctx.desc(d.image);
             glClearNamedBufferData(ctx.buffer(d.histogram), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            glUseProgram(rc.shaders.get("postfx/shaders/exposure_histogram.glsl")->id());
+            glUseProgram(rc.shaders.id("postfx/shaders/exposure_histogram.glsl"));
             glBindTextureUnit(0, ctx.texture(d.image));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kHistogramBinding, ctx.buffer(d.histogram));
             const GLuint g = postfx::kHistogramGroup;
@@ -74,7 +74,7 @@ ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc
             d.state = b.write(state);
         },
         [&rc, low, high, min_ev, max_ev, up, down, compensation, dt, reset, units](const AdaptData& d, PassContext& ctx) {
-            GLuint program = rc.shaders.get("postfx/shaders/exposure_adapt.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/exposure_adapt.glsl");
             glUseProgram(program);
             glProgramUniform2f(program, 0, low, high);
             glProgramUniform2f(program, 1, min_ev, max_ev);
@@ -112,7 +112,7 @@ TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, T
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (automatic) defines.push_back("EXPOSURE_AUTO");
-            GLuint program = rc.shaders.get("postfx/shaders/exposure_apply.glsl", defines)->id();
+            GLuint program = rc.shaders.id("postfx/shaders/exposure_apply.glsl", defines);
             glUseProgram(program);
             glProgramUniform1f(program, 0, manual);
             glBindTextureUnit(0, ctx.texture(data.in));
@@ -122,7 +122,7 @@ TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, T
     return d.out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> exposurePrograms() {
+ProgramList exposurePrograms() {
     return {{"postfx/shaders/exposure_histogram.glsl", {}},
             {"postfx/shaders/exposure_adapt.glsl", {}},
             {"postfx/shaders/exposure_apply.glsl", {}},

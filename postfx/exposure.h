@@ -52,6 +52,6 @@ ExposureInput cameraExposure(const ExposureSettings& s, double ev100_value, doub
 TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                    const ExposureInput& exposure);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> exposurePrograms();
+ProgramList exposurePrograms();
 
 }  // namespace vista

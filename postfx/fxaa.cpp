@@ -20,7 +20,7 @@ TextureHandle addFxaaPass(FrameGraph& graph, const RenderContext& rc, TextureHan
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (hdr) defines.push_back("FXAA_HDR");
-            GLuint program = rc.shaders.get("postfx/shaders/fxaa.glsl", defines)->id();
+            GLuint program = rc.shaders.id("postfx/shaders/fxaa.glsl", defines);
             glUseProgram(program);
             glProgramUniform3f(program, 0, params.x, params.y, params.z);
             glBindTextureUnit(0, ctx.texture(data.in));
@@ -29,7 +29,7 @@ TextureHandle addFxaaPass(FrameGraph& graph, const RenderContext& rc, TextureHan
     return d.out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> fxaaPrograms() {
+ProgramList fxaaPrograms() {
     return {{"postfx/shaders/fxaa.glsl", {}}, {"postfx/shaders/fxaa.glsl", {"FXAA_HDR"}}};
 }
 

@@ -13,6 +13,6 @@ namespace vista {
 // hdr: the image is linear HDR (FXAA placed before the tone map): luma is compressed first.
 TextureHandle addFxaaPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image, const FxaaSettings& s, bool hdr);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> fxaaPrograms();
+ProgramList fxaaPrograms();
 
 }  // namespace vista

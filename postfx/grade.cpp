@@ -24,8 +24,8 @@ TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHa
         [&rc, g, l](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/grade.glsl", l.texture ? std::vector<std::string>{"GRADE_LUT"}
-                                                                                   : std::vector<std::string>{})->id();
+            GLuint program = rc.shaders.id("postfx/shaders/grade.glsl", l.texture ? std::vector<std::string>{"GRADE_LUT"}
+                                                                                   : std::vector<std::string>{});
             glUseProgram(program);
             const glm::vec3 inv_gamma = 1.0f / glm::max(g.gamma, glm::vec3(1e-3f));
             glProgramUniform3f(program, 0, g.lift.x, g.lift.y, g.lift.z);
@@ -65,7 +65,7 @@ TextureHandle addNightVisionPass(FrameGraph& graph, const RenderContext& rc, Tex
         [&rc, n](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/night_vision.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/night_vision.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, n.gain, n.noise, n.vignette, float(std::floor(rc.time_s * double(n.noise_rate))));
             glProgramUniform3f(program, 1, n.tint.x, n.tint.y, n.tint.z);
@@ -74,7 +74,7 @@ TextureHandle addNightVisionPass(FrameGraph& graph, const RenderContext& rc, Tex
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> gradePrograms() {
+ProgramList gradePrograms() {
     return {{"postfx/shaders/grade.glsl", {}}, {"postfx/shaders/grade.glsl", {"GRADE_LUT"}},
             {"postfx/shaders/night_vision.glsl", {}}};
 }

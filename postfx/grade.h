@@ -25,6 +25,6 @@ TextureHandle addGradePass(FrameGraph& graph, const RenderContext& rc, TextureHa
 TextureHandle addNightVisionPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                  const NightVisionSettings& s);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> gradePrograms();
+ProgramList gradePrograms();
 
 }  // namespace vista

@@ -60,7 +60,7 @@ TextureHandle LensFlare::addPasses(FrameGraph& graph, const RenderContext& rc, T
             d.state = b.write(state);
         },
         [&rc, sun_uv, radius_px, dt, rate, continues](const VisibilityData& d, PassContext& ctx) {
-            GLuint program = rc.shaders.get("postfx/shaders/lens_flare_visibility.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/lens_flare_visibility.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, sun_uv.x, sun_uv.y, radius_px, 0.0f);
             glProgramUniform3f(program, 1, dt, rate, continues ? 0.0f : 1.0f);
@@ -88,7 +88,7 @@ TextureHandle LensFlare::addPasses(FrameGraph& graph, const RenderContext& rc, T
         [&rc, sun_uv, shape, strength](const FlareData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/lens_flare.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/lens_flare.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, sun_uv.x, sun_uv.y, strength.x, strength.y);
             glProgramUniform4f(program, 1, shape.x, shape.y, shape.z, shape.w);
@@ -98,7 +98,7 @@ TextureHandle LensFlare::addPasses(FrameGraph& graph, const RenderContext& rc, T
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> lensFlarePrograms() {
+ProgramList lensFlarePrograms() {
     return {{"postfx/shaders/lens_flare_visibility.glsl", {}}, {"postfx/shaders/lens_flare.glsl", {}}};
 }
 

@@ -52,6 +52,6 @@ private:
     bool had_sun_ = false;  // last frame measured: smoothing continues; otherwise take it at once
 };
 
-std::vector<std::pair<std::string, std::vector<std::string>>> lensFlarePrograms();
+ProgramList lensFlarePrograms();
 
 }  // namespace vista

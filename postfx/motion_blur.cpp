@@ -54,7 +54,7 @@ TextureHandle MotionBlur::addPasses(FrameGraph& graph, const RenderContext& rc, 
         [&rc, reproject, scale, tile, near_m](const VelocityData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/motion_blur_velocity.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/motion_blur_velocity.glsl");
             glUseProgram(program);
             glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
             glProgramUniform4f(program, 1, scale, float(tile), near_m, 0.0f);
@@ -76,7 +76,7 @@ TextureHandle MotionBlur::addPasses(FrameGraph& graph, const RenderContext& rc, 
             [&rc, mode, tile](const TileData& d, PassContext& ctx) {
                 const TextureDesc& desc = ctx.desc(d.out);
                 bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-                GLuint program = rc.shaders.get("postfx/shaders/motion_blur_tiles.glsl")->id();
+                GLuint program = rc.shaders.id("postfx/shaders/motion_blur_tiles.glsl");
                 glUseProgram(program);
                 glProgramUniform2i(program, 0, mode, tile);
                 glBindTextureUnit(0, ctx.texture(d.in));
@@ -102,7 +102,7 @@ TextureHandle MotionBlur::addPasses(FrameGraph& graph, const RenderContext& rc, 
         [&rc, params](const GatherData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/motion_blur_gather.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/motion_blur_gather.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, params.x, params.y, params.z, params.w);
             glBindTextureUnit(0, ctx.texture(d.image));
@@ -112,7 +112,7 @@ TextureHandle MotionBlur::addPasses(FrameGraph& graph, const RenderContext& rc, 
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> motionBlurPrograms() {
+ProgramList motionBlurPrograms() {
     return {{"postfx/shaders/motion_blur_velocity.glsl", {}},
             {"postfx/shaders/motion_blur_tiles.glsl", {}},
             {"postfx/shaders/motion_blur_gather.glsl", {}}};

@@ -40,6 +40,6 @@ private:
     bool has_previous_ = false;
 };
 
-std::vector<std::pair<std::string, std::vector<std::string>>> motionBlurPrograms();
+ProgramList motionBlurPrograms();
 
 }  // namespace vista

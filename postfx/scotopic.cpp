@@ -57,7 +57,7 @@ TextureHandle addScotopicPass(FrameGraph& graph, const RenderContext& rc, Textur
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
             std::vector<std::string> defines;
             if (view) defines.push_back("ROD_SHARE_VIEW");
-            GLuint program = rc.shaders.get("postfx/shaders/scotopic.glsl", defines)->id();
+            GLuint program = rc.shaders.id("postfx/shaders/scotopic.glsl", defines);
             glUseProgram(program);
             glProgramUniform3f(program, 0, cd, radius_px, blue);
             glBindTextureUnit(0, ctx.texture(data.in));
@@ -65,7 +65,7 @@ TextureHandle addScotopicPass(FrameGraph& graph, const RenderContext& rc, Textur
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> scotopicPrograms() {
+ProgramList scotopicPrograms() {
     return {{"postfx/shaders/scotopic.glsl", {}}, {"postfx/shaders/scotopic.glsl", {"ROD_SHARE_VIEW"}}};
 }
 

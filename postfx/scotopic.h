@@ -26,6 +26,6 @@ double rodShare(double luminance_cd);
 TextureHandle addScotopicPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                               const ScotopicSettings& s, double cd_per_value);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> scotopicPrograms();
+ProgramList scotopicPrograms();
 
 }  // namespace vista

@@ -25,7 +25,7 @@ TextureHandle addSsaoPasses(FrameGraph& graph, const RenderContext& rc, const Sc
         [&rc, params, counts](const Raw& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.ao);
             bindTarget(rc.device.framebuffer({ctx.texture(d.ao)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/ssao.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/ssao.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 0, params.x, params.y, params.z, params.w);
             glProgramUniform2i(program, 1, counts.x, counts.y);
@@ -49,7 +49,7 @@ TextureHandle addSsaoPasses(FrameGraph& graph, const RenderContext& rc, const Sc
         [&rc, blur](const Blur& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.ao);
             bindTarget(rc.device.framebuffer({ctx.texture(d.ao)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/ssao_blur.glsl")->id();
+            GLuint program = rc.shaders.id("postfx/shaders/ssao_blur.glsl");
             glUseProgram(program);
             glProgramUniform3f(program, 0, blur.x, blur.y, blur.z);
             glBindTextureUnit(0, ctx.texture(d.raw));
@@ -58,7 +58,7 @@ TextureHandle addSsaoPasses(FrameGraph& graph, const RenderContext& rc, const Sc
         }).ao;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> ssaoPrograms() {
+ProgramList ssaoPrograms() {
     return {{"postfx/shaders/ssao.glsl", {}}, {"postfx/shaders/ssao_blur.glsl", {}}};
 }
 

@@ -16,6 +16,6 @@ namespace vista {
 // The full-size ambient visibility (r, 1 = open) for scene.ao. Needs scene.depth and scene.normal.
 TextureHandle addSsaoPasses(FrameGraph& graph, const RenderContext& rc, const SceneTargets& scene, const SsaoSettings& s);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> ssaoPrograms();
+ProgramList ssaoPrograms();
 
 }  // namespace vista

@@ -69,7 +69,7 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
             const TextureDesc& desc = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.new_history), ctx.texture(d.new_depth)}),
                        desc.width, desc.height);
-            const GLuint program = rc.shaders.get("postfx/shaders/taa.glsl")->id();
+            const GLuint program = rc.shaders.id("postfx/shaders/taa.glsl");
             glUseProgram(program);
             glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
             glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
@@ -83,7 +83,7 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
         }).out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> taaPrograms() {
+ProgramList taaPrograms() {
     return {{"postfx/shaders/taa.glsl", {}}};
 }
 

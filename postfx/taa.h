@@ -43,6 +43,6 @@ private:
     bool valid_ = false;
 };
 
-std::vector<std::pair<std::string, std::vector<std::string>>> taaPrograms();
+ProgramList taaPrograms();
 
 }  // namespace vista

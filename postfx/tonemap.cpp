@@ -24,8 +24,8 @@ std::vector<std::string> defines(Tonemapper op, bool automatic) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::vector<std::string>>> tonemapPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+ProgramList tonemapPrograms() {
+    ProgramList programs;
     for (Tonemapper op : {Tonemapper::Reinhard, Tonemapper::Aces, Tonemapper::Clamp, Tonemapper::Agx})
         for (bool automatic : {false, true}) programs.push_back({"postfx/shaders/tonemap.glsl", defines(op, automatic)});
     return programs;
@@ -51,7 +51,7 @@ TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, Texture
         [&rc, op, manual, white, automatic](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.ldr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.ldr)}), desc.width, desc.height);
-            GLuint program = rc.shaders.get("postfx/shaders/tonemap.glsl", defines(op, automatic))->id();
+            GLuint program = rc.shaders.id("postfx/shaders/tonemap.glsl", defines(op, automatic));
             glUseProgram(program);
             glProgramUniform1f(program, 0, manual);
             glProgramUniform1f(program, 1, white);

@@ -15,6 +15,6 @@ TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, Texture
                              const ExposureInput& exposure, const char* name = "postfx.tonemap");
 
 // Every program variant this module uses (for up-front compilation and tests).
-std::vector<std::pair<std::string, std::vector<std::string>>> tonemapPrograms();
+ProgramList tonemapPrograms();
 
 }  // namespace vista

@@ -26,7 +26,7 @@ void addGridPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings
             const TextureDesc& desc = ctx.desc(data.t.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.t.hdr)}, ctx.texture(data.t.depth)), desc.width,
                        desc.height);
-            GLuint program = rc.shaders.get("renderer/shaders/grid.glsl")->id();
+            GLuint program = rc.shaders.id("renderer/shaders/grid.glsl");
             glUseProgram(program);
             glProgramUniform2f(program, 0, origin.x, origin.y);
             glProgramUniform1f(program, 1, height);

@@ -30,7 +30,7 @@ TextureHandle addDebugViewPass(FrameGraph& graph, const RenderContext& rc, const
         [&rc, heat_max = debug.heat_max](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("renderer/shaders/debug_view.glsl")->id());
+            glUseProgram(rc.shaders.id("renderer/shaders/debug_view.glsl"));
             glUniform1i(0, data.view);
             glUniform1f(1, data.source.valid() ? heat_max : -1.0f);  // < 0: no heat target, 0 lights
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));

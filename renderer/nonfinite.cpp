@@ -17,7 +17,7 @@ void addNonfiniteCountPass(FrameGraph& graph, const RenderContext& rc, TextureHa
         [&rc, &readback](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             GLuint counter = readback.request(rc.frame, "nonfinite_pixels");
-            glUseProgram(rc.shaders.get("renderer/shaders/nonfinite.glsl")->id());
+            glUseProgram(rc.shaders.id("renderer/shaders/nonfinite.glsl"));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.hdr));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counter);
             glDispatchCompute(GLuint((desc.width + 7) / 8), GLuint((desc.height + 7) / 8), 1);

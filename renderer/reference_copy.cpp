@@ -15,7 +15,7 @@ double measureReferenceCopyMs(const RenderContext& rc, TimerMode mode, int width
     const float grey[4] = {0.5f, 0.25f, 0.125f, 1.0f};
     glClearTexImage(source.id(), 0, GL_RGBA, GL_FLOAT, grey);
     bindTarget(fb.id(), width, height);
-    glUseProgram(rc.shaders.get("renderer/shaders/copy.glsl")->id());
+    glUseProgram(rc.shaders.id("renderer/shaders/copy.glsl"));
     glBindTextureUnit(0, source.id());
 
     drawFullscreen(rc);  // warm-up: first-use costs (shader JIT on llvmpipe) are not the copy's

@@ -8,6 +8,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace vista {
 namespace fs = std::filesystem;
@@ -174,23 +175,51 @@ bool ShaderLibrary::build(Program& p) {
 }
 
 ShaderLibrary::Program* ShaderLibrary::get(const fs::path& file, const std::vector<std::string>& defines) {
-    std::string key = file.generic_string();
-    for (const auto& d : defines) key += " -D" + d;
+    const std::string key = ProgramKey{file.generic_string(), defines}.text();
     auto it = programs_.find(key);
     if (it != programs_.end()) return it->second->gl ? it->second.get() : nullptr;
 
+    if (restricted_ && !listed_.count(key)) {
+        const std::string message = "program variant " + key +
+                                    " is not listed: add it to its feature's variant list (the enumeration "
+                                    "allPrograms() concatenates), which the shader test compiles";
+        if (unlisted == UnlistedProgram::Fail) throw std::logic_error(message);
+        if (unlisted_seen_.insert(key).second) std::fprintf(stderr, "vista: %s\n", message.c_str());
+    }
     auto program = std::make_unique<Program>();
     program->name = key;
     program->file = file;
     program->defines = defines;
     Program* p = program.get();
     programs_.emplace(key, std::move(program));
+    ++compiled_;
     if (!build(*p)) {
         last_error_ = p->error;
         return nullptr;
     }
     return p;
 }
+
+GLuint ShaderLibrary::id(const fs::path& file, const std::vector<std::string>& defines) {
+    if (Program* p = get(file, defines)) return p->id();
+    const std::string key = ProgramKey{file.generic_string(), defines}.text();
+    const auto it = programs_.find(key);
+    const std::string error = it != programs_.end() ? it->second->error : last_error_;
+    if (unlisted == UnlistedProgram::Fail) throw std::runtime_error(key + " failed to compile:\n" + error);
+    if (failures_reported_.insert(key).second)
+        std::fprintf(stderr, "vista: %s failed to compile; its passes draw nothing:\n%s", key.c_str(), error.c_str());
+    return 0;
+}
+
+void ShaderLibrary::setListed(const ProgramList& keys) {
+    restricted_ = true;
+    listed_.clear();
+    for (const ProgramKey& k : keys) addListed(k);
+}
+
+void ShaderLibrary::addListed(const ProgramKey& key) { listed_.insert(key.text()); }
+
+bool ShaderLibrary::listed(const ProgramKey& key) const { return !restricted_ || listed_.count(key.text()) > 0; }
 
 int ShaderLibrary::poll() {
     auto now = std::chrono::steady_clock::now();

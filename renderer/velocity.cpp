@@ -37,7 +37,7 @@ TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, Textur
         [&rc, reproject, jitter](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.get("renderer/shaders/velocity.glsl")->id();
+            const GLuint program = rc.shaders.id("renderer/shaders/velocity.glsl");
             glUseProgram(program);
             glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
             glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
@@ -46,7 +46,7 @@ TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, Textur
         }).velocity;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> velocityPrograms() {
+ProgramList velocityPrograms() {
     return {{"renderer/shaders/velocity.glsl", {}}};
 }
 

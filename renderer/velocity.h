@@ -31,6 +31,6 @@ glm::dvec4 cpuVelocity(const ViewParams& previous, const ViewParams& current, gl
 // Adds "temporal.velocity" from depth; previous == rc.view (no previous frame) gives zero motion.
 TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, const ViewParams& previous);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> velocityPrograms();
+ProgramList velocityPrograms();
 
 }  // namespace vista

@@ -135,9 +135,10 @@ AtmosphereParams atmosphereParams(const SkySettings& s) {
     return p;
 }
 
-std::vector<std::string> skyPrograms() {
-    return {"sky/shaders/transmittance_lut.glsl", "sky/shaders/multiscatter_lut.glsl", "sky/shaders/sky_view_lut.glsl",
-            "sky/shaders/sky.glsl", "sky/shaders/aerial_volume.glsl", "sky/shaders/aerial.glsl"};
+ProgramList skyPrograms() {
+    return {{"sky/shaders/transmittance_lut.glsl", {}}, {"sky/shaders/multiscatter_lut.glsl", {}},
+            {"sky/shaders/sky_view_lut.glsl", {}},      {"sky/shaders/sky.glsl", {}},
+            {"sky/shaders/aerial_volume.glsl", {}},     {"sky/shaders/aerial.glsl", {}}};
 }
 
 SkyAtmosphere::SkyAtmosphere()
@@ -266,7 +267,7 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
             },
             [this, &rc, u = pass_u, program, on_done](const LutData& data, PassContext& ctx) {
                 upload(u);
-                glUseProgram(rc.shaders.get(program)->id());
+                glUseProgram(rc.shaders.id(program));
                 if (data.in0.valid()) glBindTextureUnit(binding::kTex0, ctx.texture(data.in0));
                 if (data.in1.valid()) glBindTextureUnit(binding::kTex1, ctx.texture(data.in1));
                 const TextureDesc& desc = ctx.desc(data.out);
@@ -339,7 +340,7 @@ void SkyAtmosphere::addSkyPass(FrameGraph& graph, const RenderContext& rc, Scene
             const TextureDesc& desc = ctx.desc(data.hdr);
             GLuint depth = data.depth.valid() ? ctx.texture(data.depth) : 0;
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, depth), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("sky/shaders/sky.glsl")->id());
+            glUseProgram(rc.shaders.id("sky/shaders/sky.glsl"));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
             glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));
@@ -376,7 +377,7 @@ void SkyAtmosphere::addAerialPasses(FrameGraph& graph, const RenderContext& rc, 
             },
             [this, &rc, u, size](const VolumeData& data, PassContext& ctx) {
                 upload(u);
-                glUseProgram(rc.shaders.get("sky/shaders/aerial_volume.glsl")->id());
+                glUseProgram(rc.shaders.id("sky/shaders/aerial_volume.glsl"));
                 glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
                 glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
                 glBindImageTexture(binding::kImageOutput, ctx.texture(data.inscatter), 0, GL_FALSE, 0, GL_WRITE_ONLY,
@@ -409,7 +410,7 @@ void SkyAtmosphere::addAerialPasses(FrameGraph& graph, const RenderContext& rc, 
             upload(u);
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("sky/shaders/aerial.glsl")->id());
+            glUseProgram(rc.shaders.id("sky/shaders/aerial.glsl"));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             if (data.inscatter.valid()) {
                 glBindTextureUnit(binding::kTex1, ctx.texture(data.inscatter));

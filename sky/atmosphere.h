@@ -38,7 +38,7 @@ glm::dmat3 celestialFromWorld(const SkySettings& sky);
 AtmosphereParams atmosphereParams(const SkySettings& sky);
 
 // Every program the sky uses (for FrameRenderer::allPrograms()).
-std::vector<std::string> skyPrograms();
+ProgramList skyPrograms();
 
 // What the sky LUTs were last built for, and how often (tests and the bench look).
 struct SkyLutStats {

@@ -107,8 +107,8 @@ int materialTier(const TerrainSettings& s, double distance_m) {
     return 2;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs;
+ProgramList terrainPrograms() {
+    ProgramList programs;
     for (bool wireframe : {false, true}) {
         TerrainSettings s;
         s.wireframe = wireframe;
@@ -700,7 +700,7 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             bindTarget(fb, desc.width, desc.height);
             std::array<GLuint, kMaterialTiers> programs{};
             for (int tier = 0; tier < kMaterialTiers; ++tier)
-                programs[std::size_t(tier)] = rc.shaders.get("terrain/shaders/terrain.glsl", terrainDefines(s, tier))->id();
+                programs[std::size_t(tier)] = rc.shaders.id("terrain/shaders/terrain.glsl", terrainDefines(s, tier));
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
@@ -710,7 +710,7 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             glCullFace(GL_BACK);
             glFrontFace(GL_CCW);
             const GLuint tess = s.tessellation.enabled
-                                    ? rc.shaders.get("terrain/shaders/terrain_tess.glsl", terrainTessDefines(s))->id()
+                                    ? rc.shaders.id("terrain/shaders/terrain_tess.glsl", terrainTessDefines(s))
                                     : 0;
             terrain.draw(s, programs, tess);
             glDisable(GL_CULL_FACE);
@@ -729,7 +729,7 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GEQUAL);
             glDepthMask(GL_FALSE);
-            terrain.drawBounds(rc.shaders.get("terrain/shaders/bounds.glsl")->id());
+            terrain.drawBounds(rc.shaders.id("terrain/shaders/bounds.glsl"));
             glDepthMask(GL_TRUE);
             glDisable(GL_DEPTH_TEST);
         });

@@ -233,6 +233,6 @@ std::vector<std::string> terrainTessDefines(const TerrainSettings& s);
 // Material tier of a quadrant whose box is distance_m from the camera at its nearest.
 int materialTier(const TerrainSettings& s, double distance_m);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> terrainPrograms();
+ProgramList terrainPrograms();
 
 }  // namespace vista

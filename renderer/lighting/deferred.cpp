@@ -22,9 +22,7 @@ SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings) {
     return out;
 }
 
-std::vector<std::string> lightingPrograms() {
-    return {"renderer/lighting/shaders/sun.glsl"};
-}
+ProgramList lightingPrograms() { return variantPrograms<SunVariant>(); }
 
 void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAndSky& light, SceneTargets& targets,
                         const SunShadowInput& shadows, DebugView debug) {
@@ -44,16 +42,14 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
         [&rc, light, shadows, debug](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            std::vector<std::string> defines;
-            if (data.ao.valid()) defines.push_back("HAS_AO");
-            if (data.cloud_shadow.valid()) defines.push_back("HAS_CLOUD_SHADOW");
-            if (data.shadow.valid()) {
-                defines.push_back("HAS_SUN_SHADOW");
-                if (debug == DebugView::Cascades) defines.push_back("SHADOW_CASCADE_VIEW");
-                shadows.bind(ctx.texture(data.shadow));
-            }
-            if (debug == DebugView::Shadow) defines.push_back("SHADOW_TERM_VIEW");
-            glUseProgram(rc.shaders.get("renderer/lighting/shaders/sun.glsl", defines)->id());
+            SunVariant variant;
+            variant.ao = data.ao.valid();
+            variant.cloud_shadow = data.cloud_shadow.valid();
+            variant.sun_shadow = data.shadow.valid();
+            if (debug == DebugView::Shadow) variant.debug = SunVariant::Debug::ShadowTerm;
+            if (debug == DebugView::Cascades && variant.sun_shadow) variant.debug = SunVariant::Debug::Cascades;
+            if (data.shadow.valid()) shadows.bind(ctx.texture(data.shadow));
+            glUseProgram(rc.shaders.id(variant.key()));
             if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
             if (data.cloud_shadow.valid()) {
                 glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "config/settings.h"
+#include "renderer/lighting/sun_variant.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "renderer/shadows/sun_shadows.h"
@@ -31,8 +32,8 @@ struct SunAndSky {
 // the light from below.
 SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings);
 
-// Every program the lighting uses (for FrameRenderer::allPrograms()).
-std::vector<std::string> lightingPrograms();
+// Every variant of "lighting.sun" (SunVariant::all(), for FrameRenderer::allPrograms()).
+ProgramList lightingPrograms();
 
 // Needs targets.albedo, .normal and .depth; multiplies the ambient by targets.ao when valid (SSAO)
 // and the sun's direct light by targets.cloud_shadow when valid (HAS_CLOUD_SHADOW) and by the

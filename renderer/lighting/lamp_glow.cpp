@@ -195,7 +195,7 @@ void LampGlow::addPass(FrameGraph& graph, const RenderContext& rc, SceneTargets&
         [this, &rc](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get(kGlowProgram)->id());
+            glUseProgram(rc.shaders.id(kGlowProgram));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, lights_buf_.id());
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             glBindTextureUnit(binding::kTex1, table_.id());
@@ -210,6 +210,6 @@ void LampGlow::addPass(FrameGraph& graph, const RenderContext& rc, SceneTargets&
 
 std::size_t LampGlow::gpuMemoryBytes() const { return table_.bytes() + std::size_t(lights_buf_.size()); }
 
-std::vector<std::string> lampGlowPrograms() { return {kGlowProgram}; }
+ProgramList lampGlowPrograms() { return {{kGlowProgram, {}}}; }
 
 }  // namespace vista

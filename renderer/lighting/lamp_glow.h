@@ -35,6 +35,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/lighting/light_settings.h"
 #include "renderer/lighting/lights.h"
+#include "renderer/program_key.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 
@@ -130,7 +131,7 @@ private:
     GlowStats stats_;
 };
 
-std::vector<std::string> lampGlowPrograms();
+ProgramList lampGlowPrograms();  // for FrameRenderer::allPrograms()
 
 // ---- implementation of the template ----
 // Antiderivative in theta of the falloff's window (1 - q^4 sec^4 theta)^2 (q = h / r), written

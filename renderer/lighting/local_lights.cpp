@@ -2,6 +2,7 @@
 #include "renderer/lighting/local_lights.h"
 
 #include "renderer/lighting/light_settings.h"
+#include "renderer/lighting/light_variants.h"
 #include "renderer/bindings.h"
 
 #include <glm/geometric.hpp>
@@ -33,16 +34,6 @@ struct GridUniforms {
 
 constexpr int kHashLevelWords = 16;
 constexpr int kHashHeaderWords = (LightHash::kMaxLevels + 1) * kHashLevelWords;
-
-const char* methodDefine(LightCulling m) {
-    switch (m) {
-        case LightCulling::Naive: return "LIGHTS_NAIVE";
-        case LightCulling::Tiled: return "LIGHTS_TILED";
-        case LightCulling::Clustered: return "LIGHTS_CLUSTERED";
-        case LightCulling::Hashed: return "LIGHTS_HASHED";
-    }
-    return "LIGHTS_NAIVE";
-}
 
 }  // namespace
 
@@ -78,8 +69,10 @@ bool sphereMeetsView(const glm::dvec3& center_rel, double radius, const ViewPara
     return !(c.z < view.near_m - r || std::abs(c.x) > c.z * tx + r * kx || std::abs(c.y) > c.z * ty + r * ky);
 }
 
-std::vector<std::string> localLightPrograms() {
-    return {"renderer/lighting/shaders/light_cull.glsl", "renderer/lighting/shaders/light_shade.glsl"};
+ProgramList localLightPrograms() {
+    ProgramList programs = variantPrograms<LightCullVariant>();
+    appendPrograms(programs, variantPrograms<LightShadeVariant>());
+    return programs;
 }
 
 void LocalLights::GpuBuffer::reserve(std::size_t bytes, std::string_view name) {
@@ -196,7 +189,7 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
     // The lights the GPU sees. Tiled and clustered take only those whose bounding sphere meets
     // the view frustum (no other can light a visible point); naive loops over all by definition,
     // and hashed's octree indexes all of them.
-    const bool screen_culled = stats_.method == LightCulling::Tiled || stats_.method == LightCulling::Clustered;
+    const bool screen_culled = screenCulled(stats_.method);
     const double ty = std::tan(glm::radians(view.fov_deg) * 0.5);
     // A sphere at depth z > r spans about r / z * focal pixels in radius: below min_screen_px it
     // lights at most a few pixels, faintly (its falloff reaches 0 at the radius), and would still
@@ -427,7 +420,7 @@ void LocalLights::setPointShadowSlots(const PointShadows& shadows) {
     writeShadowSlots(shadows.picks(), [&](std::size_t k) { return shadows.slotOf(k); }, 1);
 }
 
-const char* LocalLights::define() const { return methodDefine(stats_.method); }
+const char* LocalLights::define() const { return lightMethodDefine(stats_.method); }
 
 void LocalLights::bindForForward() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kLightGrid, grid_ubo_.buffer.id());
@@ -440,7 +433,7 @@ void LocalLights::bindForForward() const {
 void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets,
                             CounterReadback& counters, const LightPassOptions& options) {
     const LightCulling method = stats_.method;
-    const bool culled = method == LightCulling::Tiled || method == LightCulling::Clustered;
+    const bool culled = screenCulled(method);
     auto bindBuffers = [this]() {
         bindForForward();
         if (spheres_buf_.buffer.id()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSpheres, spheres_buf_.buffer.id());
@@ -471,9 +464,7 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 const std::uint32_t draw[4] = {3, 0, 0, 0};  // a full-screen triangle, no instance yet
                 glNamedBufferSubData(shade_draw_.id(), 0, sizeof draw, draw);
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kLightShadeDraw, shade_draw_.id());
-                std::vector<std::string> defines = {methodDefine(method)};
-                if (forward) defines.push_back("LIGHTS_FORWARD");
-                glUseProgram(rc.shaders.get("renderer/lighting/shaders/light_cull.glsl", defines)->id());
+                glUseProgram(rc.shaders.id(LightCullVariant{method, forward}.key()));
                 bindBuffers();
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, overflow);
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, pool_buf_.buffer.id());
@@ -512,12 +503,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             GLuint fb = data.heat.valid() ? rc.device.framebuffer({ctx.texture(data.hdr), ctx.texture(data.heat)})
                                           : rc.device.framebuffer({ctx.texture(data.hdr)});
             bindTarget(fb, desc.width, desc.height);
-            std::vector<std::string> defines = {methodDefine(method)};
-            if (options.count) defines.push_back("COUNT_LIGHTS");
-            if (data.heat.valid()) defines.push_back("LIGHT_HEAT");
-            if (data.spot.valid()) defines.push_back("HAS_SPOT_SHADOWS");
-            if (data.point.valid()) defines.push_back("HAS_POINT_SHADOWS");
-            glUseProgram(rc.shaders.get("renderer/lighting/shaders/light_shade.glsl", defines)->id());
+            const LightShadeVariant variant{method, options.count, data.heat.valid(), data.spot.valid(), data.point.valid()};
+            glUseProgram(rc.shaders.id(variant.key()));
             bindBuffers();
             // One shadow input's uniforms, map (compare sampler) and raw depth (PCSS, debug).
             const auto bindShadows = [&](const auto& input, TextureHandle map, int uniforms, int map_unit,

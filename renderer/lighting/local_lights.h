@@ -72,8 +72,8 @@ std::uint64_t sceneLightCount(const LightsSettings& s);
 // padded by 1e-4 of the radius and of the distance so that rounding never drops a light.
 bool sphereMeetsView(const glm::dvec3& center_rel, double radius, const ViewParams& view, const ViewMatrices& m);
 
-// Every program the local lights use (for FrameRenderer::allPrograms()).
-std::vector<std::string> localLightPrograms();
+// Every variant of "lights.cull" and "lights.shade" (light_variants.h, for FrameRenderer::allPrograms()).
+ProgramList localLightPrograms();
 
 struct LocalLightStats {
     std::uint64_t count = 0;        // lights this frame

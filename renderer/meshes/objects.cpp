@@ -52,8 +52,8 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, GLenum 
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
+ProgramList objectPrograms() {
+    ProgramList programs = {
             {"renderer/meshes/shaders/object_cull.glsl", {}},
             {"renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"}},
             {"renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"}},
@@ -312,7 +312,7 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             const Frustum planes = frustumFromViewProj(glm::dmat4(rc.matrices.view_proj));
             glClearNamedBufferData(counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            GLuint program = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl")->id();
+            GLuint program = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl");
             glUseProgram(program);
             glProgramUniform1ui(program, 0, GLuint(instance_count_));
             glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
@@ -340,7 +340,7 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             const std::uint64_t gx = std::min<std::uint64_t>(groups, 65535), gy = (groups + gx - 1) / gx;
             glDispatchCompute(GLuint(gx), GLuint(gy), 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            GLuint fixup = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"})->id();
+            GLuint fixup = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"});
             glUseProgram(fixup);
             glProgramUniform1ui(fixup, 0, GLuint(draws_list_.size()));
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectDraws, draws_.id());
@@ -406,7 +406,7 @@ void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool sh
         if (shadow) defines.push_back("SHADOW_PASS");
         if (fading) defines.push_back("IMPOSTOR_FADE");
         if (mask) defines.push_back("ALPHA_MASK");
-        const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+        const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
         glUseProgram(program);
         glProgramUniform1ui(program, 0, d.region);
         glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
@@ -427,7 +427,7 @@ void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool sh
 
 void Objects::drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const {
     const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
-    const GLuint program = rc.shaders.get("renderer/meshes/shaders/impostor.glsl")->id();
+    const GLuint program = rc.shaders.id("renderer/meshes/shaders/impostor.glsl");
     glUseProgram(program);
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
@@ -510,7 +510,7 @@ void Objects::bakeImpostors(const RenderContext& rc) {
                     if (mat.alpha_mode == AlphaMode::Blend) continue;  // impostors show the opaque parts
                     std::vector<std::string> defines;
                     if (mat.alpha_mode != AlphaMode::Opaque) defines.push_back("ALPHA_MASK");
-                    const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+                    const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
                     glUseProgram(program);
                     glProgramUniform1ui(program, 0, 0u);
                     glProgramUniform3f(program, 1, 0.0f, 0.0f, 0.0f);
@@ -539,7 +539,7 @@ void Objects::bakeImpostors(const RenderContext& rc) {
 void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const {
     drawList(rc, matrix, true, nullptr);
     if (shadow_counter_ == 0) return;
-    const GLuint program = rc.shaders.get("renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"})->id();
+    const GLuint program = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"});
     glUseProgram(program);
     glProgramUniform1ui(program, 0, GLuint(models_.size()));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectModels, models_buffer_.id());
@@ -599,7 +599,7 @@ void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, 
                 if (mat.alpha_mode == AlphaMode::Blend || p.index_count == 0) continue;  // glass casts no shadow (as drawList)
                 std::vector<std::string> defines{"SHADOW_PASS"};
                 if (mat.alpha_mode == AlphaMode::Mask) defines.push_back("ALPHA_MASK");
-                const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+                const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
                 glUseProgram(program);
                 glProgramUniform1ui(program, 0, start);
                 glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);

@@ -193,6 +193,6 @@ private:
     ObjectStats stats_;
 };
 
-std::vector<std::pair<std::string, std::vector<std::string>>> objectPrograms();
+ProgramList objectPrograms();
 
 }  // namespace vista

@@ -148,7 +148,7 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             if (chunks > 1) {
                 std::vector<std::string> chunk_defines = defines;
                 chunk_defines.push_back("LIGHT_CHUNK");
-                chunk_program = rc.shaders.get("renderer/meshes/shaders/object.glsl", chunk_defines)->id();
+                chunk_program = rc.shaders.id("renderer/meshes/shaders/object.glsl", chunk_defines);
             }
             // The sun's cascades shade the glass as they shade the G-buffer (a variant; the local
             // lights' further chunks need no sun).
@@ -156,7 +156,7 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                 defines.push_back("HAS_SUN_SHADOW");
                 light.bind_sun_shadow(ctx.texture(data.shadow));
             }
-            const GLuint program = rc.shaders.get("renderer/meshes/shaders/object.glsl", defines)->id();
+            const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
             glUseProgram(program);
             if (light.bind_lights) light.bind_lights();
             const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);

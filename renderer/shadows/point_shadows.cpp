@@ -165,7 +165,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDepthFunc(GL_GREATER);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
+            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
             glUseProgram(program);
             terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);
@@ -212,7 +212,7 @@ TextureHandle addPointShadowViewPass(FrameGraph& graph, const RenderContext& rc,
         [&rc, shadows, cubes](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("renderer/shadows/shaders/point_shadow_view.glsl")->id());
+            glUseProgram(rc.shaders.id("renderer/shadows/shaders/point_shadow_view.glsl"));
             glUniform1i(0, data.cubes.valid() ? cubes : 0);
             if (data.cubes.valid()) {
                 glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.cubes));

@@ -185,7 +185,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glEnable(GL_SCISSOR_TEST);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.spot_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
+            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
             glUseProgram(program);
             auto bindTile = [&](std::size_t k) {
                 const int x = int(k) % tiles_per_side_ * tile, y = int(k) / tiles_per_side_ * tile;
@@ -223,7 +223,7 @@ TextureHandle addSpotAtlasViewPass(FrameGraph& graph, const RenderContext& rc, c
         [&rc, shadows, tiles_per_side](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("renderer/shadows/shaders/spot_atlas_view.glsl")->id());
+            glUseProgram(rc.shaders.id("renderer/shadows/shaders/spot_atlas_view.glsl"));
             glUniform1i(0, data.atlas.valid() ? tiles_per_side : 0);
             if (data.atlas.valid()) {
                 glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.atlas));

@@ -194,7 +194,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_DEPTH_CLAMP);  // casters between the box and the sun land on depth 0
                 glEnable(GL_POLYGON_OFFSET_FILL);
                 glPolygonOffset(settings_.slope_bias, 0.0f);
-                GLuint program = rc.shaders.get("terrain/shaders/terrain.glsl", {"SHADOW_PASS"})->id();
+                GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
                 glUseProgram(program);
                 glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
@@ -232,7 +232,7 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
         [&rc, shadows, cascades](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("renderer/shadows/shaders/shadow_view.glsl")->id());
+            glUseProgram(rc.shaders.id("renderer/shadows/shaders/shadow_view.glsl"));
             glUniform1i(0, data.map.valid() ? cascades : 0);
             glUniform1i(1, int(shadows.drawn));
             if (data.map.valid()) {
@@ -245,7 +245,7 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
     return d.out;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms() {
+ProgramList shadowPrograms() {
     return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}},
             {"renderer/shadows/shaders/point_shadow_view.glsl", {}}};
 }

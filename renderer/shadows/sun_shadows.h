@@ -102,6 +102,6 @@ private:
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
                                    int cascades);
 
-std::vector<std::pair<std::string, std::vector<std::string>>> shadowPrograms();
+ProgramList shadowPrograms();
 
 }  // namespace vista

@@ -27,7 +27,7 @@ struct Clouds::Gpu {
     glm::vec4 planet, ambient, shadow, sun;
 };
 
-std::vector<ProgramKeyText> cloudPrograms() {
+ProgramList cloudPrograms() {
     return {{"sky/clouds/shaders/clouds.glsl", {}},
             {"sky/clouds/shaders/clouds.glsl", {"HALF_RES"}},
             {"sky/clouds/shaders/clouds.glsl", {"TEMPORAL"}},
@@ -113,7 +113,7 @@ TextureHandle Clouds::addShadowPass(FrameGraph& graph, const RenderContext& rc, 
             const TextureDesc& desc = ctx.desc(d.shadow);
             bind();
             bindTarget(rc.device.framebuffer({tex}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("sky/clouds/shaders/cloud_shadow.glsl")->id());
+            glUseProgram(rc.shaders.id("sky/clouds/shaders/cloud_shadow.glsl"));
             drawFullscreen(rc);
             // Sampled bilinearly; beyond the map the edge texels continue.
             glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -162,7 +162,7 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
                 glClearColor(0, 0, 0, 0);
                 glClear(GL_COLOR_BUFFER_BIT);
             }
-            glUseProgram(rc.shaders.get("sky/clouds/shaders/clouds.glsl", defines)->id());
+            glUseProgram(rc.shaders.id("sky/clouds/shaders/clouds.glsl", defines));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.depth));
             if (!own_target) {
@@ -192,7 +192,7 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
             bind();
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get("sky/clouds/shaders/clouds_composite.glsl")->id());
+            glUseProgram(rc.shaders.id("sky/clouds/shaders/clouds_composite.glsl"));
             const GLuint tex = ctx.texture(data.clouds);
             glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -254,7 +254,7 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
         [&rc, prev_clip, shift, params](const Data& d, PassContext& ctx) {
             const TextureDesc& out = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.out_distance)}), out.width, out.height);
-            const GLuint program = rc.shaders.get("sky/clouds/shaders/clouds_temporal.glsl")->id();
+            const GLuint program = rc.shaders.id("sky/clouds/shaders/clouds_temporal.glsl");
             glUseProgram(program);
             glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(prev_clip));
             glProgramUniform4fv(program, 1, 1, glm::value_ptr(shift));

@@ -21,8 +21,7 @@ namespace vista {
 class SkyAtmosphere;
 
 // Every program the clouds use, with its defines (for FrameRenderer::allPrograms()).
-using ProgramKeyText = std::pair<std::string, std::vector<std::string>>;
-std::vector<ProgramKeyText> cloudPrograms();
+ProgramList cloudPrograms();
 
 class Clouds {
 public:

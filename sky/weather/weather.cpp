@@ -13,7 +13,7 @@
 
 namespace vista {
 
-std::vector<std::pair<std::string, std::vector<std::string>>> weatherPrograms() {
+ProgramList weatherPrograms() {
     return {{"sky/weather/shaders/weather_rain.glsl", {}},
             {"sky/weather/shaders/weather_rain.glsl", {"SNOW"}},
             {"sky/weather/shaders/weather_splash.glsl", {}}};
@@ -98,8 +98,8 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
          instances](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(d.hdr)}, ctx.texture(d.depth)), desc.width, desc.height);
-            GLuint program = rc.shaders.get("sky/weather/shaders/weather_rain.glsl", snow ? std::vector<std::string>{"SNOW"}
-                                                                                  : std::vector<std::string>{})->id();
+            GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", snow ? std::vector<std::string>{"SNOW"}
+                                                                                  : std::vector<std::string>{});
             glUseProgram(program);
             glProgramUniform4i(program, 0, frame.box_min.x, frame.box_min.y, frame.box_min.z, layout.cells);
             glProgramUniform4i(program, 1, layout.half, per_cell, count ? 1 : 0, 0);
@@ -141,7 +141,7 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
                                                                                                  PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(d.hdr)}, ctx.texture(d.depth)), desc.width, desc.height);
-            GLuint program = rc.shaders.get("sky/weather/shaders/weather_splash.glsl")->id();
+            GLuint program = rc.shaders.id("sky/weather/shaders/weather_splash.glsl");
             glUseProgram(program);
             const TerrainMapping& m = terrain->mapping();
             const glm::dvec3 rel = rc.view.position - ts.origin;

@@ -26,7 +26,7 @@ namespace vista {
 
 class Terrain;
 
-std::vector<std::pair<std::string, std::vector<std::string>>> weatherPrograms();
+ProgramList weatherPrograms();
 
 struct WeatherStats {
     std::int64_t drop_cells = 0;         // box cells listed as visible

@@ -22,8 +22,8 @@ int farSegments(int near_segments) { return std::max(1, (near_segments + 1) / 2)
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::vector<std::string>>> grassPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
+ProgramList grassPrograms() {
+    ProgramList programs = {
         {"terrain/grass/shaders/grass.glsl", {}}, {"terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"}}};
     TerrainSettings ts;  // the cull with the height/slope rules, and with one and two splat images
     for (const char* splat : {"", "a.png", "a.png b.png"}) {
@@ -111,7 +111,7 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
                                           {std::uint32_t(2 * farSegments(s.segments) + 1), 0, 0, 0}};
             glNamedBufferSubData(draws_.id(), 0, sizeof reset, reset);
 
-            GLuint program = rc.shaders.get("terrain/grass/shaders/grass_cull.glsl", splatDefines(ts))->id();
+            GLuint program = rc.shaders.id("terrain/grass/shaders/grass_cull.glsl", splatDefines(ts));
             glUseProgram(program);
             glProgramUniform4i(program, 0, box_min.x, box_min.y, l.cells, l.blades_per_cell);
             glProgramUniform2i(program, 1, int(camera_cell.x), int(camera_cell.y));
@@ -168,7 +168,7 @@ void Grass::drawLists(GLuint program, const GrassSettings& s) const {
 }
 
 void Grass::drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const {
-    GLuint program = rc.shaders.get("terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"})->id();
+    GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"});
     glUseProgram(program);
     glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
     glBindVertexArray(rc.empty_vao);
@@ -195,7 +195,7 @@ void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const Gra
             GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
                                               ctx.texture(data.t.depth));
             bindTarget(fb, desc.width, desc.height);
-            GLuint program = rc.shaders.get("terrain/grass/shaders/grass.glsl")->id();
+            GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl");
             glUseProgram(program);
             glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, wetness_);
             glBindVertexArray(rc.empty_vao);

@@ -67,6 +67,6 @@ bool grassInReach(const Terrain& terrain, const TerrainSettings& ts, const Grass
 // Bytes of one culled blade on the GPU (GrassBlade in grass_common.glsl).
 constexpr std::size_t kGrassBladeBytes = 48;
 
-std::vector<std::pair<std::string, std::vector<std::string>>> grassPrograms();
+ProgramList grassPrograms();
 
 }  // namespace vista

@@ -22,7 +22,6 @@ namespace vista {
 namespace {
 
 constexpr const char* kCopyProgram = "terrain/water/shaders/water_copy.glsl";
-constexpr const char* kSurfaceProgram = "terrain/water/shaders/water_surface.glsl";
 constexpr const char* kUnderwaterProgram = "terrain/water/shaders/underwater.glsl";
 
 bool sameWaves(const WaterSettings& a, const WaterSettings& b) {
@@ -143,7 +142,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         [&rc](const CopyData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.color);
             bindTarget(rc.device.framebuffer({ctx.texture(d.color), ctx.texture(d.depth_copy)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get(kCopyProgram)->id());
+            glUseProgram(rc.shaders.id(kCopyProgram));
             glBindTextureUnit(binding::kTex0, ctx.texture(d.hdr));
             glBindTextureUnit(binding::kTex1, ctx.texture(d.depth));
             drawFullscreen(rc);
@@ -153,14 +152,12 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
     struct SurfaceData {
         TextureHandle color, depth_copy, sky_view, shadow, hdr, depth;
     };
-    std::vector<std::string> defines;
-    if (view_ != WaterView::Shaded) {
-        // A debug view is a variant (the shaded surface pays nothing for it); it replaces the
-        // colour, so it needs neither lights nor shadows.
-        defines.push_back("WATER_VIEW=" + std::to_string(int(view_)));
-    } else {
-        if (lights) defines.push_back(lights->define());
-        if (shadows.valid()) defines.push_back("HAS_SUN_SHADOW");
+    // A debug view is a variant (the shaded surface pays nothing for it); it replaces the
+    // colour, so it needs neither lights nor shadows.
+    WaterSurfaceVariant variant{view_};
+    if (view_ == WaterView::Shaded) {
+        if (lights) variant.lights = lights->stats().method;
+        variant.sun_shadow = shadows.valid();
     }
     // The segments that can be in view (from the matrix the vertex stage uses, jitter included),
     // each drawn from the eye out to this frame's last ring: one range per segment.
@@ -188,10 +185,10 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             data.hdr = b.write(targets.hdr);
             data.depth = b.write(targets.depth);
         },
-        [this, &rc, sky, lights, defines, shadows, draw](const SurfaceData& data, PassContext& ctx) {
+        [this, &rc, sky, lights, variant, shadows, draw](const SurfaceData& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
-            const GLuint program = rc.shaders.get(kSurfaceProgram, defines)->id();
+            const GLuint program = rc.shaders.id(variant.key());
             glUseProgram(program);
             glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
             if (sky) glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_ATMOSPHERE, sky->frameUniformBuffer());
@@ -211,7 +208,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             if (lit && lights->chunks() > 1) {
                 // The lights past the first chunk (lights.glsl chunkOf): the surface again, its
                 // local light only, added where the depth is the surface's own.
-                const GLuint chunk = rc.shaders.get(kSurfaceProgram, {lights->define(), "WATER_LIGHT_CHUNK"})->id();
+                const GLuint chunk = rc.shaders.id(WaterSurfaceVariant{WaterView::Shaded, variant.lights, false, true}.key());
                 glUseProgram(chunk);
                 glDepthFunc(GL_EQUAL);
                 glDepthMask(GL_FALSE);
@@ -245,7 +242,7 @@ void Water::addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneT
         [this, &rc](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.get(kUnderwaterProgram)->id());
+            glUseProgram(rc.shaders.id(kUnderwaterProgram));
             glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             glEnable(GL_BLEND);
@@ -257,17 +254,9 @@ void Water::addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneT
     targets.hdr = d.hdr;
 }
 
-std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms() {
-    std::vector<std::pair<std::string, std::vector<std::string>>> programs = {
-        {kCopyProgram, {}}, {kSurfaceProgram, {}}, {kUnderwaterProgram, {}}};
-    programs.push_back({kSurfaceProgram, {"HAS_SUN_SHADOW"}});
-    for (WaterView view : {WaterView::Normals, WaterView::Foam, WaterView::Depth})
-        programs.push_back({kSurfaceProgram, {"WATER_VIEW=" + std::to_string(int(view))}});
-    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
-        programs.push_back({kSurfaceProgram, {method}});
-        programs.push_back({kSurfaceProgram, {method, "HAS_SUN_SHADOW"}});
-        programs.push_back({kSurfaceProgram, {method, "WATER_LIGHT_CHUNK"}});
-    }
+ProgramList waterPrograms() {
+    ProgramList programs = {{kCopyProgram, {}}, {kUnderwaterProgram, {}}};
+    appendPrograms(programs, variantPrograms<WaterSurfaceVariant>());
     return programs;
 }
 

@@ -14,6 +14,8 @@
 #include "config/settings.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
+#include "renderer/lighting/light_variants.h"
+#include "renderer/program_key.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "renderer/shadows/sun_shadows.h"
@@ -22,6 +24,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +33,47 @@ namespace vista {
 
 class LocalLights;
 class SkyAtmosphere;
+
+// The variants of "water.surface" (shaders/water_surface.glsl): shaded with or without the
+// local lights (by their culling method) and the sun's cascades, the pass of the lights past the
+// first chunk, or a debug view. The pass asks for defines(); all() is every variant a frame can
+// request (waterPrograms(), for allPrograms() and the shader test).
+struct WaterSurfaceVariant {
+    static constexpr const char* kFile = "terrain/water/shaders/water_surface.glsl";
+    WaterView view = WaterView::Shaded;  // WATER_VIEW=N: the colour replaced by a debug output
+    std::optional<LightCulling> lights;  // LIGHTS_*: the local lights, by their culling method
+    bool sun_shadow = false;             // HAS_SUN_SHADOW: the sun through its cascades
+    bool light_chunk = false;            // WATER_LIGHT_CHUNK: one further chunk of local lights alone
+
+    // The rules between the fields: a debug view replaces the colour, so it takes neither lights
+    // nor shadows; a further chunk adds local light only, so it needs lights and no sun.
+    bool valid() const {
+        if (view != WaterView::Shaded) return !lights && !sun_shadow && !light_chunk;
+        return !light_chunk || (lights && !sun_shadow);
+    }
+
+    std::vector<std::string> defines() const {
+        std::vector<std::string> d;
+        if (view != WaterView::Shaded) d.push_back("WATER_VIEW=" + std::to_string(int(view)));
+        if (lights) d.push_back(lightMethodDefine(*lights));
+        if (sun_shadow) d.push_back("HAS_SUN_SHADOW");
+        if (light_chunk) d.push_back("WATER_LIGHT_CHUNK");
+        return d;
+    }
+    ProgramKey key() const { return {kFile, defines()}; }
+
+    static std::vector<WaterSurfaceVariant> all() {
+        std::vector<std::optional<LightCulling>> methods = {std::nullopt};
+        for (LightCulling m : kLightMethods) methods.push_back(m);
+        std::vector<WaterSurfaceVariant> out;
+        for (WaterView view : {WaterView::Shaded, WaterView::Normals, WaterView::Foam, WaterView::Depth})
+            for (const auto& lights : methods)
+                for (bool shadow : {false, true})
+                    for (bool chunk : {false, true})
+                        if (WaterSurfaceVariant v{view, lights, shadow, chunk}; v.valid()) out.push_back(v);
+        return out;
+    }
+};
 
 // The light the water is lit by (renderer/lighting/deferred.h SunAndSky), RGB in HDR units.
 struct WaterLight {
@@ -102,6 +146,6 @@ private:
 };
 
 // Every program the water uses (for FrameRenderer::allPrograms()).
-std::vector<std::pair<std::string, std::vector<std::string>>> waterPrograms();
+ProgramList waterPrograms();
 
 }  // namespace vista

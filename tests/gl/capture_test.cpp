@@ -104,8 +104,6 @@ TEST_CASE("gl: an EXR capture reads linear HDR and culls tone mapping") {
 TEST_CASE("gl: disabled features add no pass, and a debug view culls the final image") {
     test::glContext();
     FrameRenderer renderer(vistaRoot());
-    std::string errors;
-    REQUIRE(renderer.compilePrograms(errors));
     Settings s;
     std::vector<unsigned char> ldr;
     FrameRequest request;
@@ -132,8 +130,6 @@ TEST_CASE("gl: disabled features add no pass, and a debug view culls the final i
 TEST_CASE("gl: extreme inputs render finite: 1x1 target, camera 10,000 km out, sun below the horizon") {
     test::glContext();
     FrameRenderer renderer(vistaRoot());
-    std::string errors;
-    REQUIRE(renderer.compilePrograms(errors));
     std::vector<std::uint16_t> hdr;
     FrameRequest request;
     request.capture_hdr = &hdr;
@@ -172,8 +168,6 @@ TEST_CASE("gl: capture refuses to overwrite images without --force, and unwritab
 TEST_CASE("gl: a scene saved by the panel's writer reproduces the same frame") {
     test::glContext();
     FrameRenderer renderer(vistaRoot());
-    std::string errors;
-    REQUIRE(renderer.compilePrograms(errors));
     Settings original;
     REQUIRE(loadScene(defaultScenePath(), {"sky.sun_elevation_deg=12.345", "postfx.exposure.ev=0.3"}, original).empty());
     test::TempDir dir("save-scene");

@@ -19,8 +19,12 @@
 
 namespace vista::test {
 
+// The context, made on first use. From then on every new ShaderLibrary (each FrameRenderer's)
+// throws on a request for a variant outside its list and on a failed compile (strict mode): a
+// reachable variant missing from allPrograms() fails the test that reaches it.
 inline GlContext& glContext() {
     static std::unique_ptr<GlContext> context = [] {
+        ShaderLibrary::unlisted_default = UnlistedProgram::Fail;
         std::string error;
         auto c = createContext(Backend::OSMesa, ContextOptions{64, 64, false, false, false, true, "test"}, error);
         if (!c) FAIL("cannot create an OSMesa context: " << error);
@@ -42,6 +46,7 @@ inline std::vector<float> readRgba(GLuint texture, int w, int h) {
 template <class Bind>
 std::vector<float> drawProbe(ShaderLibrary& shaders, const std::string& shader, const std::vector<std::string>& defines,
                              int w, int h, Bind&& bind) {
+    shaders.addListed({shader, defines});  // a test's own program, beside a renderer's list
     auto* program = shaders.get(shader, defines);
     REQUIRE_MESSAGE(program, shader);
     gl::Texture target = gl::Texture::create2D(w, h, GL_RGBA32F, 1, "probe");

@@ -70,8 +70,6 @@ TEST_CASE("gl: golden images of the default scene, per post effect and the full 
          }},
     };
     FrameRenderer renderer(vistaRoot());
-    std::string errors;
-    REQUIRE(renderer.compilePrograms(errors));
     const std::filesystem::path dir = vistaRoot() / "tests" / "golden";
     for (const Golden& g : cases) {
         INFO(g.name);

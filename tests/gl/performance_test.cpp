@@ -120,7 +120,7 @@ TEST_CASE("gl: terrain debug views and the wireframe are program variants, not b
                 TerrainSettings t;
                 t.view = view;
                 t.wireframe = wire;
-                const std::pair<std::string, std::vector<std::string>> key{"terrain/shaders/terrain.glsl", terrainDefines(t, tier)};
+                const ProgramKey key{"terrain/shaders/terrain.glsl", terrainDefines(t, tier)};
                 CHECK(std::find(programs.begin(), programs.end(), key) != programs.end());
             }
     // The near tier keeps the detail out to detail_distance_m, the far tier starts at far_material_m.

@@ -454,8 +454,6 @@ TEST_CASE("gl: SSAO leaves flat ground open and darkens a crease, at full and ha
 TEST_CASE("gl: SSAO runs before the sun lighting, and adds no pass when disabled") {
     test::glContext();
     FrameRenderer renderer(vistaRoot());
-    std::string errors;
-    REQUIRE(renderer.compilePrograms(errors));
     Settings s;
     REQUIRE(renderer.prepare(s).empty());  // the terrain: a G-buffer to occlude
     std::vector<unsigned char> ldr;

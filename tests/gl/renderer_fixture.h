@@ -56,17 +56,9 @@ namespace {
     return file;
 }
 
-// The same, with every program compiled once up front (a compile error fails the test).
-[[maybe_unused]] FrameRenderer& compiledFileRenderer() {
-    FrameRenderer& r = fileRenderer();
-    static bool compiled = [&r] {
-        std::string errors;
-        REQUIRE_MESSAGE(r.compilePrograms(errors), errors);
-        return true;
-    }();
-    (void)compiled;
-    return r;
-}
+// The same renderer. Programs compile on first use, each test compiling only what its scenes
+// use; a compile error or an unlisted variant throws (gl_fixture.h), failing the test.
+[[maybe_unused]] FrameRenderer& compiledFileRenderer() { return fileRenderer(); }
 
 // One rendered frame: its report, the image as RGBA floats (top row first: the linear HDR target,
 // or with ldr the displayed sRGB image in [0, 1]) and the GPU counters it wrote, summed by name.

@@ -3,9 +3,14 @@
 #include "app/frame.h"
 #include "app/scene.h"
 #include "gl_fixture.h"
+#include "renderer/lighting/light_variants.h"
+#include "renderer/lighting/sun_variant.h"
 #include "renderer/shader_library.h"
+#include "terrain/water/water.h"
 
+#include <algorithm>
 #include <fstream>
+#include <stdexcept>
 #include <set>
 #include <thread>
 
@@ -47,19 +52,28 @@ TEST_CASE("gl: OSMesa gives a 4.5 core context with reversed-Z clip control") {
 TEST_CASE("gl: every program and variant compiles") {
     test::glContext();
     ShaderLibrary shaders(vistaRoot());
-    for (const auto& p : allPrograms()) {
-        CAPTURE(p.file);
-        CHECK_MESSAGE(shaders.get(p.file, p.defines) != nullptr, shaders.lastError());
+    const ProgramList programs = allPrograms();
+    std::set<std::string> keys;
+    for (const ProgramKey& p : programs) {
+        CAPTURE(p.text());
+        CHECK_MESSAGE(keys.insert(p.text()).second, "listed twice");
+        CHECK_MESSAGE(shaders.get(p) != nullptr, shaders.lastError());
     }
+    MESSAGE(programs.size() << " program variants");
     // Every shader file with a stage is used by some program (none is left to rot).
     std::set<std::string> used;
-    for (const auto& p : allPrograms()) used.insert(p.file);
-    // Every folder named shaders under the source folders (tests/ has its own probes).
+    for (const ProgramKey& p : programs) used.insert(p.file);
+    // Every folder named shaders anywhere in the sources (tests/ has its own probes, build
+    // folders hold copies).
     int folders = 0;
-    for (const char* top : {"renderer", "terrain", "sky", "postfx"}) {
-        for (const auto& d : std::filesystem::recursive_directory_iterator(vistaRoot() / top)) {
+    std::set<std::string> tops;
+    for (const auto& top : std::filesystem::directory_iterator(vistaRoot())) {
+        const std::string name = top.path().filename().string();
+        if (!top.is_directory() || name == "tests" || name.starts_with(".") || name.starts_with("build")) continue;
+        for (const auto& d : std::filesystem::recursive_directory_iterator(top.path())) {
             if (!d.is_directory() || d.path().filename() != "shaders") continue;
             ++folders;
+            tops.insert(name);
             for (const auto& e : std::filesystem::directory_iterator(d.path())) {
                 ShaderSource src = preprocessShader(vistaRoot(), e.path());
                 bool has_main = src.text.find("void main") != std::string::npos;
@@ -68,7 +82,67 @@ TEST_CASE("gl: every program and variant compiles") {
             }
         }
     }
-    CHECK(folders >= 10);
+    CHECK(folders >= 11);  // nested ones too: renderer/lighting/shaders, sky/clouds/shaders, ...
+    CHECK(tops.size() >= 4);
+}
+
+TEST_CASE("gl: a variant outside allPrograms() fails the test, and a failed compile gives no null program") {
+    test::glContext();  // strict mode from here on (gl_fixture.h)
+    FrameRenderer renderer(vistaRoot());
+    ShaderLibrary& shaders = renderer.shaders();
+    CHECK(shaders.listed({"renderer/shaders/copy.glsl", {}}));
+    CHECK(shaders.id("renderer/shaders/copy.glsl") != 0);
+    CHECK_FALSE(shaders.listed({"renderer/shaders/copy.glsl", {"NOT_A_VARIANT"}}));
+    CHECK_THROWS_AS(shaders.id("renderer/shaders/copy.glsl", {"NOT_A_VARIANT"}), std::logic_error);
+    // The same defines in another order is another program: also refused.
+    CHECK(shaders.listed(SunVariant{true, true, true, SunVariant::Debug::None}.key()));
+    CHECK_THROWS_AS(shaders.id(SunVariant::kFile, {"HAS_SUN_SHADOW", "HAS_AO"}), std::logic_error);
+    CHECK(shaders.unlistedRequests().empty());
+
+    // Production: the unlisted variant compiles, reported once; a failed compile is id 0 (its
+    // pass draws nothing) instead of a null dereference, and its error is kept.
+    test::TempDir dir("shader-strict");
+    writeText(dir.path / "lib.glsl", "vec4 libColor() { return vec4(1.0) }\n");  // missing ';'
+    writeText(dir.path / "main.glsl", kGood);
+    ShaderLibrary lenient(dir.path);
+    lenient.unlisted = UnlistedProgram::Log;
+    lenient.setListed({{"main.glsl", {}}});
+    CHECK(lenient.id("main.glsl") == 0);
+    REQUIRE(lenient.errors().size() == 1);
+    CHECK(lenient.errors()[0].find("lib.glsl:1:") != std::string::npos);
+    writeText(dir.path / "lib.glsl", "vec4 libColor() { return vec4(1.0); }\n");
+    CHECK(lenient.id("main.glsl", {"EXTRA"}) != 0);
+    CHECK(lenient.unlistedRequests() == std::set<std::string>{"main.glsl -DEXTRA"});
+    CHECK(lenient.compiled() == 2);
+    // Under the tests' strict mode the failed compile throws with its error.
+    ShaderLibrary strict(dir.path);
+    writeText(dir.path / "lib.glsl", "vec4 libColor() { return vec4(1.0) }\n");
+    CHECK_THROWS_AS(strict.id("main.glsl"), std::runtime_error);
+}
+
+TEST_CASE("gl: the variant structs enumerate exactly the valid combinations of their fields") {
+    // lighting.sun: 2 x 2 x 2 fields x 3 debug outputs, less the cascade view without cascades.
+    const std::vector<SunVariant> sun = SunVariant::all();
+    CHECK(sun.size() == 2 * 2 * (2 + 3));
+    std::set<std::vector<std::string>> distinct;
+    for (const SunVariant& v : sun) {
+        CHECK(v.valid());
+        distinct.insert(v.defines());
+    }
+    CHECK(distinct.size() == sun.size());
+    CHECK_FALSE((SunVariant{false, false, false, SunVariant::Debug::Cascades}.valid()));
+    // The combinations that used to compile lazily, untested, are listed now.
+    const ProgramList listed = allPrograms();
+    auto isListed = [&](const ProgramKey& k) { return std::find(listed.begin(), listed.end(), k) != listed.end(); };
+    CHECK(isListed(SunVariant{false, true, true, SunVariant::Debug::None}.key()));  // SSAO off, cloud and sun shadows
+    CHECK(isListed(LightShadeVariant{LightCulling::Tiled, true, false, false, false}.key()));  // counters without heat
+    // lights.shade: every method with 2^4 switches; lights.cull: tiled and clustered, forward or not.
+    CHECK(LightShadeVariant::all().size() == 4 * 16);
+    CHECK(LightCullVariant::all().size() == 2 * 2);
+    for (const LightCullVariant& v : LightCullVariant::all()) CHECK(screenCulled(v.method));
+    // water.surface: unlit or each method, with or without the sun's shadows, each method's further
+    // chunks (no sun), and the three debug views alone.
+    CHECK(WaterSurfaceVariant::all().size() == 2 + 4 * 3 + 3);
 }
 
 TEST_CASE("gl: a shader error is reported at its file:line through an include") {
