@@ -223,6 +223,7 @@ int runBenchShadows(const BenchScene& isolated, const BenchShadowsOptions& o) {
     base.clouds.enabled = false;  // the cascades alone (cloud shadows move with the wind)
     base.shadows.enabled = true;
     base.sky.sun_mode = SunMode::Angles;
+    base.shadows.cache_frames = 1;  // every cascade drawn every frame: the figures are of drawing them
     if (InputErrors errors = renderer.prepare(base); !errors.empty() || !renderer.terrain()) {
         std::fprintf(stderr, "vista: bench shadows needs the scene's terrain: %s\n", errors.empty() ? "[terrain] is off" : errors.front().str().c_str());
         return 2;

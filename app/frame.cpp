@@ -12,6 +12,7 @@
 #include "renderer/temporal.h"
 #include "app/light_placement.h"
 #include "app/scene.h"
+#include "config/ini.h"
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
 #include "sky/atmosphere.h"
@@ -92,6 +93,7 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
         objects_.release();  // placed on the old terrain
         terrain_.release();
         terrain_.adopt(Terrain::load(wanted, shaders_, errors));
+        ++terrain_generation_;
         terrain_source_ = wanted;
         terrain_failed_ = !terrain_;
     }
@@ -131,6 +133,7 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
+    ++terrain_generation_;
     terrain_.adopt(std::move(terrain));
     terrain_failed_ = false;
 }
@@ -281,6 +284,15 @@ double lowestReceiver(const Terrain& terrain, const Settings& s, const Objects* 
     return lowest;
 }
 
+// The settings the sun cascades' casters are drawn from, as text, and the terrain's generation.
+std::string casterKey(const Settings& s, std::uint64_t terrain_generation) {
+    Settings casters;
+    casters.terrain = s.terrain;
+    casters.objects = s.objects;
+    casters.shadows = s.shadows;
+    return saveIniString(casters) + std::to_string(terrain_generation);
+}
+
 }  // namespace
 
 SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const RenderContext& rc, const Settings& s,
@@ -300,7 +312,15 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
         terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, nullptr, spots);
         return {};
     }
-    sun_shadows_.use().prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view);
+    SunShadows& sun_shadows = sun_shadows_.use();
+    if (s.shadows.cache_frames > 1 && s.shadows.cache_cascades > 0) {
+        // A kept cascade shows the casters as they were drawn: any change to what casts (the
+        // terrain, its settings, the objects, the shadow settings) draws every cascade again.
+        std::string key = casterKey(s, terrain_generation_);
+        if (key != shadow_caster_key_) sun_shadows.forgetKept();
+        shadow_caster_key_ = std::move(key);
+    }
+    sun_shadows.prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view, sequence_index_);
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
@@ -311,6 +331,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     report.counters["shadows.drawn"] = double(st.drawn);
     report.counters["shadows.caster_instances"] = double(st.caster_instances);
     report.counters["shadows.casters_skipped"] = double(st.casters_skipped);
+    report.counters["shadows.cascades_cached"] = double(st.cached);
     return shadows;
 }
 
@@ -439,6 +460,7 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
     const bool cut = !has_last_view_ || time_s < last_time_s_ ||
                      cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
     const ViewParams previous_view = cut ? view : last_view_;
+    if (cut && sun_shadows_) sun_shadows_->forgetKept();  // a kept cascade is history too
     last_view_ = view;
     last_time_s_ = time_s;
     has_last_view_ = true;

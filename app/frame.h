@@ -108,7 +108,10 @@ public:
     // Uses a terrain made elsewhere (benchmarks): prepare() keeps it while the settings
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
-    std::unique_ptr<Terrain> releaseTerrain() { return terrain_.take(); }  // benches swap terrains
+    std::unique_ptr<Terrain> releaseTerrain() {  // benches swap terrains
+        ++terrain_generation_;
+        return terrain_.take();
+    }
 
     FrameReport render(const Settings& settings, const ViewParams& view, double time_s, const FrameRequest& request);
     // Forgets every temporal state, so the next frame renders as the first frame of a fresh
@@ -252,6 +255,8 @@ private:
     SkyLightingCache sky_lighting_;       // sun and sky light for the lighting passes (CPU)
     TerrainSettings terrain_source_;  // as given, to notice changes
     bool terrain_failed_ = false;     // do not retry a bad heightmap every frame
+    std::uint64_t terrain_generation_ = 0;  // counts terrain swaps (kept sun cascades show the old one)
+    std::string shadow_caster_key_;   // what the kept sun cascades were drawn from (casterKey in frame.cpp)
 };
 
 }  // namespace vista

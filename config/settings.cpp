@@ -418,6 +418,11 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
     v.field({"caster_cull", "", "leave out terrain quadrants whose shadows cannot reach the view depths a cascade "
              "shades (off: every quadrant in the cascade's box, same image, slower)"}, s.caster_cull);
+    v.field({"cache_cascades", "", "how many of the farthest cascades may keep their map from an earlier frame (1: the far "
+             "cascade when far_cascade is on; 0: every cascade is drawn every frame)"}, s.cache_cascades, 0, 5);
+    v.field({"cache_frames", "frames", "a kept cascade is drawn again when its snapped box moves (the view moved a texel or "
+             "turned), when the sun moves, and on every this many frames of a sequence (keep it at most [capture] "
+             "settle_frames, so capture shards stay identical; 1: every frame)"}, s.cache_frames, 1, 1000);
     v.field({"spot_enabled", "", "spot lights (with `shadow on`, their default) cast shadows from an atlas, largest on screen first"}, s.spot_enabled);
     v.field({"spot_atlas_resolution", "texels", "spot shadow atlas size per side"}, s.spot_atlas_resolution, 256, 8192);
     v.field({"spot_max_lights", "", "shadowed spot lights at once (atlas tiles); the rest go unshadowed and are counted"}, s.spot_max_lights, 1, 64);

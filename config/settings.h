@@ -473,6 +473,8 @@ struct ShadowSettings {
     bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
     bool caster_cull = true;             //!< leave out terrain quadrants whose shadows cannot reach a cascade's receivers (off: every quadrant in its box, same image, slower)
+    int cache_cascades = 1;              //!< how many of the farthest cascades may keep their map from an earlier frame (1: the far cascade when on), 0..5
+    int cache_frames = 8;                //!< a kept cascade is redrawn when its snapped box moves (the view moved a texel or turned), the sun moves, or on every this many frames of a sequence (1: every frame), 1..1000
     // Shadowed spot lights (renderer/shadows/spot_shadows.h): the visible spot lights with `shadow on`
     // (their default), largest on screen first, each get a square tile of one depth atlas.
     bool spot_enabled = true;            //!< spot lights cast shadows from the atlas

@@ -113,17 +113,18 @@ std::array<glm::dvec4, 6> casterPlanes(const LightBasis& light, const ShadowCasc
             plane(light.dir, r)};    // nothing below the box's bottom can shadow inside it
 }
 
-bool casterReachesDepth(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& forward, const glm::dvec3& sun_dir,
-                        double receivers_above_y, double min_depth_m) {
+bool casterReachesPlane(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec4& plane, const glm::dvec3& sun_dir,
+                        double receivers_above_y) {
     // Along the shadow p - t sun_dir (t >= 0, down to the floor: t <= (p.y - floor) / sun_dir.y)
-    // the view depth grows by t k, k = -dot(forward, sun_dir). The deepest point of the swept box
-    // is a swept corner: depth(p) + k max(p.y - floor, 0) / sun_dir.y is convex in p.
-    const double k = std::max(-glm::dot(forward, sun_dir), 0.0);
+    // the plane distance grows by t k, k = -dot(n, sun_dir). The farthest point of the swept box
+    // is a swept corner: dist(p) + k max(p.y - floor, 0) / sun_dir.y is convex in p.
+    const glm::dvec3 n(plane);
+    const double k = std::max(-glm::dot(n, sun_dir), 0.0);
     if (k > 0.0 && !std::isfinite(receivers_above_y)) return true;
     for (int i = 0; i < 8; ++i) {
         const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
         const double reach = k > 0.0 ? k * std::max(p.y - receivers_above_y, 0.0) / std::max(sun_dir.y, 1e-9) : 0.0;
-        if (glm::dot(forward, p) + reach >= min_depth_m) return true;
+        if (glm::dot(n, p) + plane.w + reach >= 0.0) return true;
     }
     return false;
 }

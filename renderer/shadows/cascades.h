@@ -73,13 +73,18 @@ glm::dmat4 cascadeMatrix(const LightBasis& light, const ShadowCascade& c, const 
 std::array<glm::dvec4, 6> casterPlanes(const LightBasis& light, const ShadowCascade& c, const glm::dvec3& camera,
                                        double sun_reach_m = std::numeric_limits<double>::infinity());
 
-// Whether a caster's box (camera-relative lo..hi) can shadow a receiver at view depth
-// min_depth_m or more: a shadow runs from the caster away from the sun (sun_dir, unit, y > 0)
-// down to the lowest receiver (camera-relative height receivers_above_y; -infinity: no floor),
-// so the box swept along it must reach that depth along the view's unit `forward`. With the sun
-// behind the caster as seen along `forward` the shadow points back and the box alone decides.
-bool casterReachesDepth(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& forward, const glm::dvec3& sun_dir,
-                        double receivers_above_y, double min_depth_m);
+// Whether a caster's box (camera-relative lo..hi) can shadow a receiver on the inner side of
+// `plane` (camera-relative, unit normal: dot(n, p) + d >= 0): a shadow runs from the caster away
+// from the sun (sun_dir, unit, y > 0) down to the lowest receiver (camera-relative height
+// receivers_above_y; -infinity: no floor), so the box swept along it must reach that side. With
+// the sun on the plane's inner side the shadow points out of it and the box alone decides.
+bool casterReachesPlane(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec4& plane, const glm::dvec3& sun_dir,
+                        double receivers_above_y);
+// The same for the receivers at view depth min_depth_m or more along the view's unit `forward`.
+inline bool casterReachesDepth(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& forward,
+                               const glm::dvec3& sun_dir, double receivers_above_y, double min_depth_m) {
+    return casterReachesPlane(lo, hi, glm::dvec4(forward, -min_depth_m), sun_dir, receivers_above_y);
+}
 
 // A view frustum widened for shadow casters: its planes whose half-space a step towards the sun
 // leaves are dropped, so it holds everything that can cast a shadow into the view. Selecting the

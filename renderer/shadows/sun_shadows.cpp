@@ -55,9 +55,14 @@ std::vector<std::pair<double, double>> cascadeSlices(const ShadowSettings& s, do
 }
 
 void SunShadows::prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir,
-                         const ViewParams& view, const ViewParams& fit_view) {
+                         const ViewParams& view, const ViewParams& fit_view, std::uint64_t sequence_frame) {
+    sequence_frame_ = sequence_frame;
     camera_ = view.position;
-    forward_ = viewMatrices(view).forward;
+    const ViewMatrices vm = viewMatrices(view);
+    forward_ = vm.forward;
+    const Frustum frustum = frustumFromViewProj(glm::dmat4(vm.view_proj));
+    for (std::size_t p = 0; p < view_sides_.size(); ++p)  // left, right, bottom, top: unit normals, for margins in metres
+        view_sides_[p] = frustum[p] / std::max(glm::length(glm::dvec3(frustum[p])), 1e-12);
     tan_sun_radius_ = float(std::tan(glm::radians(double(sky.sun_angular_radius_deg)))) * s.sun_size_scale;
     const auto slices = cascadeSlices(s, view.near_m);
     const bool keep = s.freeze && frozen_ && cascades_.size() == slices.size() && settings_.resolution == s.resolution;
@@ -86,6 +91,25 @@ std::array<glm::dvec4, 6> SunShadows::casterFrustum(const glm::dmat4& view_proj)
     // The view frustum widened towards the sun: the view's receivers and everything that can
     // shadow them. (A union with the cascade boxes is not convex; this superset is.)
     return extrudeTowardsSun(frustumFromViewProj(view_proj), light_.dir);
+}
+
+void SunShadows::forgetKept() { kept_.clear(); }
+
+bool SunShadows::keeps(int i, bool draws_extra) const {
+    const ShadowSettings& s = settings_;
+    const int count = int(cascades_.size());
+    if (s.cache_frames <= 1 || i < count - s.cache_cascades || draws_extra) return false;
+    if (sequence_frame_ % std::uint64_t(s.cache_frames) == 0) return false;  // the periodic redraw
+    if (std::size_t(i) >= kept_.size() || !kept_[std::size_t(i)].valid) return false;
+    // The layer holds exactly this cascade's view of the casters when the box (snapped to whole
+    // texels: it moves once the view moved a texel or turned) and the sun are the ones it was
+    // drawn with; only the casters' morphing for the camera may have moved since. The caster
+    // cull's margin (several texels) covers the view's move or turn while the box stays put
+    // (under a texel at the box's centre).
+    const Kept& k = kept_[std::size_t(i)];
+    const ShadowCascade& c = cascades_[std::size_t(i)];
+    return k.sun == light_.dir && k.box.center_world == c.center_world && k.box.radius_m == c.radius_m &&
+           k.box.texel_m == c.texel_m && k.box.near_m == c.near_m && k.box.far_m == c.far_m;
 }
 
 void SunShadows::allocate(int resolution, int layers) {
@@ -121,6 +145,10 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     stats_.cascades = count;
     instances_.resize(std::size_t(count));
     tess_.assign(std::size_t(count), 0);
+    // A kept layer is only good in the map it was drawn into.
+    if (!map_ || map_resolution_ != s.resolution || map_layers_ != count) forgetKept();
+    kept_.resize(std::size_t(count));
+    std::vector<bool> reuse(std::size_t(count), false);
     ShadowUniforms u{};
     const double texel0 = count > 0 ? cascades_[0].texel_m : 1.0;
     // Casters matter up to where a ray towards the sun clears the terrain's whole height span.
@@ -140,16 +168,34 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
         const ShadowCascade* prev = i > 0 ? &cascades_[std::size_t(i - 1)] : nullptr;
         const double serves_from = prev ? prev->far_m - double(s.blend_band) * (prev->far_m - prev->near_m) : 0.0;
         tess_[std::size_t(i)] = 0;
+        u.matrix[i] = glm::mat4(c.matrix);
+        u.range[i] = glm::vec4(float(c.near_m), float(c.far_m), float(c.texel_m), float(2.0 * c.radius_m));
+        if (keeps(i, extra.valid() && c.near_m < extra.reach_m)) {
+            reuse[std::size_t(i)] = true;  // its layer still holds what a pass would draw: no pass, no casters
+            ++stats_.cached;
+            u.info[i] = glm::vec4(1.0f, radius, 0.0f, 0.0f);
+            ++stats_.drawn;
+            continue;
+        }
+        kept_[std::size_t(i)].valid = false;  // until its pass has run (a culled pass draws nothing)
         if (terrain) {
             std::function<bool(const glm::dvec3&, const glm::dvec3&)> keep;
-            if (prev && s.caster_cull) {
-                // A lookup lands up to the normal offset, the filter kernel (or the PCSS search)
-                // and a bilinear texel from its receiver, so depth and floor give way by that twice.
+            if (s.caster_cull) {
+                // The receivers that read this cascade lie in the view's frustum between the
+                // view depth it serves from and its far end. A lookup lands up to the normal
+                // offset, the filter kernel (or the PCSS search) and a bilinear texel from its
+                // receiver, so every plane and the floor give way by that twice.
                 const double kernel = std::max(double(radius), s.filter == ShadowFilter::Pcss ? double(s.max_penumbra_texels) : 0.0);
                 const double margin = 2.0 * c.texel_m * (double(s.normal_offset_texels) + kernel + 2.0);
                 const double floor = receivers_above_m - camera_.y - margin;
-                keep = [this, floor, depth = serves_from - margin](const glm::dvec3& lo, const glm::dvec3& hi) {
-                    return casterReachesDepth(lo, hi, forward_, light_.dir, floor, depth);
+                std::array<glm::dvec4, 6> region;
+                for (std::size_t p = 0; p < view_sides_.size(); ++p) region[p] = view_sides_[p] + glm::dvec4(0.0, 0.0, 0.0, margin);
+                region[4] = glm::dvec4(forward_, margin - serves_from);
+                region[5] = glm::dvec4(-forward_, c.far_m + margin);
+                keep = [this, floor, region](const glm::dvec3& lo, const glm::dvec3& hi) {
+                    return std::all_of(region.begin(), region.end(), [&](const glm::dvec4& plane) {
+                        return casterReachesPlane(lo, hi, plane, light_.dir, floor);
+                    });
                 };
             }
             // Tessellated casters where the cascade serves displaced ground.
@@ -159,8 +205,6 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
             stats_.casters_skipped += std::int64_t(skipped);
         }
         stats_.caster_instances += std::int64_t(list.size());
-        u.matrix[i] = glm::mat4(c.matrix);
-        u.range[i] = glm::vec4(float(c.near_m), float(c.far_m), float(c.texel_m), float(2.0 * c.radius_m));
         u.info[i] = glm::vec4(list.empty() ? 0.0f : 1.0f, radius, 0.0f, 0.0f);
         if (!list.empty()) ++stats_.drawn;
     }
@@ -176,7 +220,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
         TextureHandle map;
     };
     for (int i = 0; i < count; ++i) {
-        if (u.info[i].x == 0.0f) continue;  // a cascade with nothing to draw is skipped
+        if (u.info[i].x == 0.0f || reuse[std::size_t(i)]) continue;  // nothing to draw, or kept from an earlier frame
         const bool draw_extra = extra.valid() && cascades_[std::size_t(i)].near_m < extra.reach_m;
         const Data& d = graph.addPass<Data>("shadows.cascade" + std::to_string(i),
             [&](PassBuilder& b, Data& data) {
@@ -210,6 +254,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glDisable(GL_DEPTH_CLAMP);
                 glDisable(GL_DEPTH_TEST);
                 glClearDepth(0.0);  // back to the scene's reversed-Z clear value
+                kept_[std::size_t(i)] = {true, cascades_[std::size_t(i)], light_.dir};
             });
         map = d.map;
     }

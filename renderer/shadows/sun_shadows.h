@@ -27,6 +27,7 @@ struct SunShadowStats {
     int drawn = 0;                   // of those with casters (a pass each)
     std::int64_t caster_instances = 0;  // terrain quadrants drawn over all cascades
     std::int64_t casters_skipped = 0;   // quadrants in a cascade's box whose shadow cannot reach its receivers
+    int cached = 0;                  // cascades whose map was kept from an earlier frame (no pass this frame)
     std::size_t memory_bytes = 0;    // shadow map + uniforms
 };
 
@@ -55,9 +56,12 @@ class SunShadows {
 public:
     // Fits the cascades for fit_view (normally the frame's view; or keeps frozen ones), with
     // matrices relative to view's camera. Call before the terrain selection; casterFrustum() is
-    // then what the selection should cover.
+    // then what the selection should cover. sequence_frame: the frame's place in its sequence
+    // (a capture's path frame), on whose multiples of cache_frames kept cascades are redrawn.
     void prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir, const ViewParams& view,
-                 const ViewParams& fit_view);
+                 const ViewParams& fit_view, std::uint64_t sequence_frame = 0);
+    // Drops the kept cascades (a camera cut or a history reset): the next frame draws them all.
+    void forgetKept();
     std::array<glm::dvec4, 6> casterFrustum(const glm::dmat4& view_proj) const;
 
     // One "shadows.cascadeN" pass per cascade with casters in the terrain's selection; `extra`
@@ -66,6 +70,9 @@ public:
     // cascade past the first then leaves out the terrain quadrants whose shadows, running away
     // from the sun down to there, cannot reach the view depths that read it (the nearer
     // cascades' receivers): the same shadows, fewer casters (shadows.casters_skipped).
+    // The farthest cache_cascades cascades keep their map from the frame that drew them while
+    // their snapped box and the sun stay put, up to cache_frames frames (shadows.cascades_cached);
+    // one that draws `extra` (grass sways) is drawn every frame.
     SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
                              const ShadowCaster& extra = {},
                              double receivers_above_m = -std::numeric_limits<double>::infinity());
@@ -78,17 +85,29 @@ public:
 
 private:
     void allocate(int resolution, int layers);
+    // Whether cascade i may show the map an earlier frame drew for it (see addPasses).
+    bool keeps(int i, bool draws_extra) const;
+
+    // What a cascade's layer holds: set when its pass ran, for the box and sun it ran with.
+    struct Kept {
+        bool valid = false;
+        ShadowCascade box;
+        glm::dvec3 sun{0.0};
+    };
 
     ShadowSettings settings_;
     LightBasis light_;
     glm::dvec3 camera_{0.0};
     glm::dvec3 forward_{0.0, 0.0, -1.0};  // the view's (receivers' view depths are along it)
+    std::array<glm::dvec4, 4> view_sides_{};  // the view frustum's side planes (camera-relative, unit normals)
     std::vector<ShadowCascade> cascades_;
     bool frozen_ = false;
     std::vector<std::vector<TerrainInstance>> instances_;  // per cascade, reused
     std::vector<std::size_t> tess_;  // per cascade: its first instances drawn tessellated (Terrain::shadowInstances)
     SunShadowStats stats_;
     float tan_sun_radius_ = 0.0f;
+    std::uint64_t sequence_frame_ = 0;
+    std::vector<Kept> kept_;  // per cascade
 
     gl::Texture map_;
     int map_resolution_ = 0, map_layers_ = 0;

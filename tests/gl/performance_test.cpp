@@ -193,6 +193,102 @@ TEST_CASE("gl: sun cascades leave out casters whose shadows cannot reach their r
     }
 }
 
+// A run of frames without a history reset between them (what a window or a capture renders):
+// frame k at path frame k, the cascades fitted to fits[k] (the view itself when empty).
+std::vector<test::RenderedFrame> sequence(const Settings& s, const std::vector<ViewParams>& views,
+                                          const std::vector<ViewParams>& fits = {}) {
+    useHills(s);
+    renderer().resetHistory();
+    std::vector<test::RenderedFrame> frames;
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        FrameRequest request;
+        request.sequence_frame = std::int64_t(k);
+        request.shadow_fit_view = fits.empty() ? nullptr : &fits[k];
+        frames.push_back(test::renderFrame(renderer(), s, views[k], 0.1 * double(k), request));
+    }
+    return frames;
+}
+
+// Share of pixels whose sun visibility ([debug] view = shadow, red) differs by more than 0.05.
+double visibilityChange(const std::vector<float>& a, const std::vector<float>& b) {
+    double changed = 0.0;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); i += 4) changed += std::abs(a[i] - b[i]) > 0.05f;
+    return changed / double(std::max<std::size_t>(a.size() / 4, 1));
+}
+
+bool executed(const test::RenderedFrame& f, const std::string& pass) { return contains(f.report.executed, pass); }
+
+TEST_CASE("gl: a kept far cascade shows what drawing it again shows, and is drawn again when its box moves and every cache_frames frames") {
+    Settings s = hills();
+    s.shadows.max_distance_m = 2000.0f;  // the far cascade from 2 km to 5 km: the hills' far half
+    s.sky.sun_elevation_deg = 25.0f;
+    s.sky.sun_azimuth_deg = 135.0f;
+    s.shadows.cache_cascades = 1;
+    s.shadows.cache_frames = 4;
+    const std::string far = "shadows.cascade4";
+    // The view stays put while the cascades' camera creeps (far under a far-cascade texel, about
+    // 7 m) and at frame 6 jumps 300 m: every change of the image is the shadow map's.
+    std::vector<ViewParams> views(9, kGrazing), fits(9, kGrazing);
+    for (std::size_t k = 0; k < fits.size(); ++k) fits[k].position += glm::dvec3(0.01, 0.0, 0.006) * double(k);
+    for (std::size_t k = 6; k < fits.size(); ++k) fits[k].position.x += 300.0;
+    const auto kept = sequence(s, views, fits);
+    s.shadows.cache_frames = 1;
+    const auto drawn = sequence(s, views, fits);
+    // Frame 0 follows a reset, 4 and 8 are the periodic redraws, 6 the jump.
+    const std::vector<double> expected{0, 1, 1, 1, 0, 1, 0, 1, 0};
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        CAPTURE(k);
+        CHECK(drawn[k].report.counters.at("shadows.cascades_cached") == 0.0);
+        CHECK(executed(drawn[k], far));
+        CHECK(kept[k].report.counters.at("shadows.cascades_cached") == expected[k]);
+        CHECK(executed(kept[k], far) == (expected[k] == 0.0));
+        CHECK(kept[k].report.counters.at("shadows.drawn") == drawn[k].report.counters.at("shadows.drawn"));
+        Frame a{kept[k].rgba, kept[k].report}, b{drawn[k].rgba, drawn[k].report};
+        CHECK(relativeDifference(a, b) < 1e-6);
+    }
+    // A change to what the casters are drawn with (here the slope bias) draws it again at once.
+    s.shadows.cache_frames = 4;
+    useHills(s);
+    renderer().resetHistory();
+    FrameRequest request;
+    request.sequence_frame = 1;
+    test::renderFrame(renderer(), s, kGrazing, 0.0, request);
+    request.sequence_frame = 2;
+    CHECK(test::renderFrame(renderer(), s, kGrazing, 0.1, request).report.counters.at("shadows.cascades_cached") == 1.0);
+    s.shadows.slope_bias += 0.5f;
+    request.sequence_frame = 3;
+    CHECK(test::renderFrame(renderer(), s, kGrazing, 0.2, request).report.counters.at("shadows.cascades_cached") == 0.0);
+}
+
+TEST_CASE("gl: a slowly moving camera's far-cascade shadows do not flicker more with the cascade kept") {
+    Settings s = hills();
+    s.shadows.max_distance_m = 2000.0f;
+    s.sky.sun_elevation_deg = 25.0f;
+    s.sky.sun_azimuth_deg = 135.0f;
+    s.debug.view = DebugView::Shadow;  // the sun's visibility per pixel
+    s.shadows.cache_cascades = 1;
+    // Walking pace at 30 fps along the view: the far cascade's box stays put for dozens of
+    // frames, the casters' morph and LOD follow the camera.
+    std::vector<ViewParams> views(10, kGrazing);
+    for (std::size_t k = 0; k < views.size(); ++k) views[k].position += glm::dvec3(0.12, 0.0, 0.12) * double(k);
+    s.shadows.cache_frames = 8;
+    const auto kept = sequence(s, views);
+    s.shadows.cache_frames = 1;
+    const auto drawn = sequence(s, views);
+    double flicker_kept = 0.0, flicker_drawn = 0.0, apart = 0.0, cached = 0.0;
+    for (std::size_t k = 1; k < views.size(); ++k) {
+        flicker_kept += visibilityChange(kept[k].rgba, kept[k - 1].rgba) / double(views.size() - 1);
+        flicker_drawn += visibilityChange(drawn[k].rgba, drawn[k - 1].rgba) / double(views.size() - 1);
+        apart = std::max(apart, visibilityChange(kept[k].rgba, drawn[k].rgba));
+        cached += kept[k].report.counters.at("shadows.cascades_cached");
+    }
+    MESSAGE("far cascade kept: flicker (pixels whose visibility changes by > 0.05 per frame) " << flicker_kept
+            << " kept, " << flicker_drawn << " drawn every frame; largest share apart " << apart << "; frames kept " << cached);
+    CHECK(cached >= 5.0);  // frame 8 is the periodic redraw; the box may move once
+    CHECK(flicker_kept <= flicker_drawn + 0.002);
+    CHECK(apart < 0.005);
+}
+
 TEST_CASE("gl: the sea draws only the grid segments that can be in view, with the image of the whole circle") {
     Settings s = hills();
     s.water.enabled = true;
