@@ -852,11 +852,11 @@ TEST_CASE("gl: a transparent pane half in a pillar's spot or point-light shadow 
         const char* counter = type == LightType::Spot ? "shadows.spot_shadowed" : "shadows.point_shadowed";
         CHECK(frame.report.counters.at(counter) == 1.0);
         const ShadowShare share = shadowShare(files, shadowed, unshadowed, base, 5.5, 90.0, view, shaded, lit);
-        INFO((type == LightType::Spot ? "spot" : "point") << ": glass in the shadow keeps " << share.glass
+        INFO(std::string(type == LightType::Spot ? "spot" : "point") << ": glass in the shadow keeps " << share.glass
              << ", an opaque pane " << share.opaque << ", the lit part " << share.lit_change);
         CHECK(share.lit_change == doctest::Approx(1.0).epsilon(0.05));
-        CHECK(share.opaque < 0.5);
-        CHECK(share.glass == doctest::Approx(share.opaque).epsilon(0.1));
+        CHECK(share.opaque < 0.5);  // measured 1e-7: the lamp is the only light, the pillar hides it
+        CHECK(std::abs(share.glass - share.opaque) < 0.05);  // unshadowed glass kept 1.0
     }
 }
 
