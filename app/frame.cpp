@@ -638,11 +638,14 @@ ForwardLight FrameRenderer::forwardLight(const Frame& f, const Shadows& shadows)
         forward.light_chunk = kLightChunk;
         forward.light_chunks = local_lights_->chunks();
     }
-    if (shadows.sun.valid()) {
-        forward.sun_shadow_map = shadows.sun.map;
-        forward.bind_sun_shadow = [sun = shadows.sun](GLuint map) { sun.bind(map); };
-        forward.unbind_sun_shadow = &SunShadowInput::unbind;
-    }
+    if (shadows.sun.valid())
+        forward.sun_shadow = {shadows.sun.map, [sun = shadows.sun](GLuint map) { sun.bind(map); }, &SunShadowInput::unbind};
+    if (shadows.spot.valid())
+        forward.spot_shadows = {shadows.spot.atlas, [spot = shadows.spot](GLuint map) { spot.bind(map); },
+                                &SpotShadowInput::unbind};
+    if (shadows.point.valid())
+        forward.point_shadows = {shadows.point.cubes, [point = shadows.point](GLuint map) { point.bind(map); },
+                                 &PointShadowInput::unbind};
     return forward;
 }
 
@@ -655,25 +658,31 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
     else if (!f.shadow_view) sky_.use().addLutPasses(graph, rc, s.sky);
     // The sea between the lighting and the aerial perspective (which fogs it as it fogs the terrain).
     const bool water = s.water.enabled && !f.shadow_view;
-    // Glass and other BLEND materials: the parts beyond the water plane from the eye before the
-    // sea (it refracts and absorbs them with the scene it copies), the rest over the sea; both
-    // before the aerial perspective fogs them (renderer/meshes/objects_forward.cpp).
+    if (water) {
+        const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
+        const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
+        water_.use().prepare(s.water, f.view, f.time_s, {f.light.sun_irradiance, f.light.sky_up, f.light.ground_up},
+                             sky_.get(), ground, ripples);
+    } else if (!s.water.enabled) {
+        water_.release();  // a disabled feature keeps nothing allocated
+    }
+    // Glass and other BLEND materials (renderer/meshes/objects_forward.cpp): the parts beyond the
+    // water plane from the eye before the sea (it refracts and absorbs them with the scene it
+    // copies, and the aerial perspective fogs the sea's surface in front of them), the rest after
+    // the aerial perspective, each surface fogged at its own distance.
     const bool transparent = casters.object_lists.valid() && objects_->hasTransparent() && scene.albedo.valid();
     ForwardLight forward;
     if (transparent) {
         forward = forwardLight(f, shadows);
-        objects_->sortTransparent(rc, s.objects, water ? double(s.water.level_m) : std::nan(""));
+        objects_->sortTransparent(rc, s.objects, water ? double(s.water.level_m) : std::nan(""),
+                                  water ? water_->waves().max_height : 0.0);
         objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::BeyondWater);
         report.counters["objects.transparent"] = double(objects_->transparentDrawn());
         report.counters["objects.transparent_beyond_water"] = double(objects_->transparentBeyondWater());
         report.counters["objects.transparent_dropped"] = double(objects_->transparentDropped());
     }
     if (water) {
-        Water& sea = water_.use();
-        const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
-        const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
-        sea.prepare(s.water, f.view, f.time_s, {f.light.sun_irradiance, f.light.sky_up, f.light.ground_up}, sky_.get(),
-                    ground, ripples);
+        Water& sea = *water_;
         sea.addSurfacePasses(graph, rc, scene, sky_.get(), f.local_lights ? local_lights_.get() : nullptr, shadows.sun);
         const WaterStats& st = sea.stats();
         report.counters["water.vertices"] = double(st.vertices);
@@ -681,19 +690,35 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
         report.counters["water.segments"] = double(st.segments);  // of the ring grid's, those that can be in view
         report.counters["water.waves"] = double(st.waves);
         report.counters["water.underwater"] = st.underwater ? 1.0 : 0.0;
-    } else if (!s.water.enabled) {
-        water_.release();  // a disabled feature keeps nothing allocated
     }
-    // The sky before the glass (which writes depth over it, so the sky is seen through a pane),
-    // the aerial perspective after it: the glass is fogged at its own distance.
     const bool sky = !f.shadow_view && s.sky.enabled;
     if (sky) sky_->addSkyPass(graph, rc, scene);
-    if (transparent) objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::EyeSide);
-    if (sky) {
-        sky_->addAerialPerspective(graph, rc, s.sky, scene);
-        if (f.clouds) clouds_->addShellPass(graph, rc, *sky_, scene, f.cut);
+    if (sky) sky_->addAerialPerspective(graph, rc, s.sky, scene);
+    // The glass after the aerial perspective, fogging itself with its volume; without one (aerial
+    // perspective off, or a camera in space, where sky.aerial marches each pixel) before it, as
+    // an opaque surface (renderer/meshes/objects.h addTransparentPass).
+    const AerialVolume fog = sky ? sky_->frameAerialVolume() : AerialVolume{};
+    if (transparent && !fog.valid()) {
+        objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::EyeSide);
+        report.counters["objects.transparent_fogged"] = 0.0;
     }
+    // The lamps' glow over the fogged scene, under the glass (which blends over what is behind it).
     addLampGlowPass(graph, f, scene, report);
+    // The clouds stop at the depth they find. Over the glass when no cloud can be between it and
+    // the eye (both below the lowest layer's base; the planet's curve lifts a point d away by at
+    // most d^2 / 2R): the clouds behind a pane are then seen through it. Otherwise under it (the
+    // clouds stop at the pane: those behind it are not seen through it).
+    const double curve_m = double(s.objects.max_distance_m) * double(s.objects.max_distance_m) /
+                           (2.0 * double(s.sky.planet_radius_km) * 1e3);
+    const bool clouds_behind_glass = transparent && fog.valid() &&
+                                     std::max(f.view.position.y, objects_->transparentTop() + curve_m) < cloudsLowestBaseM(s.clouds);
+    auto addGlass = [&] {
+        objects_->addTransparentPass(graph, rc, forward, scene, TransparentSide::EyeSide, fog);
+        report.counters["objects.transparent_fogged"] = 1.0;
+    };
+    if (transparent && fog.valid() && !clouds_behind_glass) addGlass();
+    if (sky && f.clouds) clouds_->addShellPass(graph, rc, *sky_, scene, f.cut);
+    if (clouds_behind_glass) addGlass();
     if (water && water_->stats().near_surface) water_->addUnderwaterPass(graph, rc, scene);
     // Rain or snow over everything opaque and the sky; off: no object, no pass, dry terrain.
     if (s.weather.enabled && !f.shadow_view) {

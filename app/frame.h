@@ -174,8 +174,9 @@ private:
     // SSAO, cloud shadows, the sun (or moon) and the local lights into the HDR target.
     void addLightingPasses(FrameGraph& graph, const Frame& f, const Shadows& shadows, SceneTargets& scene,
                            const FrameRequest& request);
-    // Over the lit scene, back to front: the sea, glass, the sky and its aerial perspective, clouds,
-    // the view under water, rain or snow.
+    // Over the lit scene, back to front: glass beyond the water plane, the sea, the sky and its
+    // aerial perspective, the rest of the glass (fogging itself) and the clouds in the order that
+    // keeps what is nearer on top, the view under water, rain or snow.
     void addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f, const Casters& casters, const Shadows& shadows,
                                     SceneTargets& scene, const FrameRequest& request, FrameReport& report);
     // What glass is lit by: the sun and sky, the local lights' forward lists, the sun's cascades.

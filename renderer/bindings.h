@@ -41,5 +41,7 @@ constexpr int kObjectVisible = 12;    // shader storage: culled instance indices
 constexpr int kObjectCounts = 13;     // shader storage: instances kept per (model, LOD) group
 constexpr int kObjectDraws = 14;      // shader storage: the indirect draw commands (instance counts set on the GPU)
 constexpr int kObjectModels = 15;     // shader storage: per model bounding sphere, regions and triangles per LOD
+constexpr int kAerialInscatter = 6;      // texture unit: the aerial-perspective volume's in-scattering (renderer/aerial_volume.h), forward passes
+constexpr int kAerialTransmittance = 7;  // texture unit: its transmittance
 
 }  // namespace vista::binding

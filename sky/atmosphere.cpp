@@ -304,6 +304,7 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
     frame_multiscatter_ = multiscatter;
     frame_sky_view_ = sky_view;
     frame_in_space_ = in_space;
+    frame_aerial_ = AerialVolume{};
     if (!frame_u_) frame_u_ = std::make_unique<Uniforms>();
     *frame_u_ = u;
 }
@@ -389,6 +390,7 @@ void SkyAtmosphere::addAerialPasses(FrameGraph& graph, const RenderContext& rc, 
             });
         inscatter = v.inscatter;
         aerial_transmittance = v.aerial_transmittance;
+        frame_aerial_ = AerialVolume{inscatter, aerial_transmittance, glm::vec4(u.aerial.x, u.aerial.y, u.aerial.z, 0.0f)};
     }
 
     struct Data {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "config/settings.h"
+#include "renderer/aerial_volume.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
@@ -61,8 +62,8 @@ public:
     // Passes that read the LUTs before the sky is drawn (water.surface) go between the two calls.
     void addLutPasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky);
     // After addLutPasses() in the same graph: addSkyPass() then addAerialPerspective(). The two
-    // touch disjoint pixels (depth at infinity, finite depth), so their order changes nothing;
-    // the frame puts the transparent objects between them, which write depth over the sky.
+    // touch disjoint pixels (depth at infinity, finite depth), so their order changes nothing.
+    // The frame draws glass after both (frameAerialVolume(): it fogs itself).
     void addScenePasses(FrameGraph& graph, const RenderContext& rc, const SkySettings& sky, SceneTargets& targets);
     // "sky.atmosphere" over targets.hdr where targets.depth (if valid) is still at infinity.
     void addSkyPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
@@ -90,6 +91,10 @@ public:
     GLuint frameUniformBuffer() const { return frame_uniforms_.id(); }
     // True when this frame's camera is above the atmosphere (the sky-view LUT is then not rebuilt).
     bool frameInSpace() const { return frame_in_space_; }
+    // This frame's aerial-perspective volume, after addAerialPerspective(): for forward surfaces
+    // drawn after "sky.aerial" that fog themselves at their own distance (the glass). Invalid
+    // without aerial perspective, depth or volume (a camera in space marches per pixel instead).
+    const AerialVolume& frameAerialVolume() const { return frame_aerial_; }
 
 private:
     struct Uniforms;
@@ -103,6 +108,7 @@ private:
     TextureHandle frame_transmittance_, frame_multiscatter_, frame_sky_view_;
     std::unique_ptr<Uniforms> frame_u_;  // this frame's block (addLutPasses to addScenePasses)
     bool frame_in_space_ = false;
+    AerialVolume frame_aerial_;  // this frame's volume (addAerialPasses)
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for
     std::vector<float> view_key_;        // size and steps of the sky-view LUT

@@ -506,21 +506,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             const LightShadeVariant variant{method, options.count, data.heat.valid(), data.spot.valid(), data.point.valid()};
             glUseProgram(rc.shaders.id(variant.key()));
             bindBuffers();
-            // One shadow input's uniforms, map (compare sampler) and raw depth (PCSS, debug).
-            const auto bindShadows = [&](const auto& input, TextureHandle map, int uniforms, int map_unit,
-                                         int depth_unit) {
-                glBindBufferBase(GL_UNIFORM_BUFFER, uniforms, input.uniforms);
-                glBindTextureUnit(map_unit, ctx.texture(map));
-                glBindSampler(map_unit, input.compare_sampler);
-                glBindTextureUnit(depth_unit, ctx.texture(map));
-                glBindSampler(depth_unit, input.depth_sampler);
-            };
-            if (data.spot.valid())
-                bindShadows(*options.spot_shadows, data.spot, binding::kSpotShadowUniforms, binding::kSpotShadowMap,
-                            binding::kSpotShadowDepth);
-            if (data.point.valid())
-                bindShadows(*options.point_shadows, data.point, binding::kPointShadowUniforms,
-                            binding::kPointShadowMap, binding::kPointShadowDepth);
+            if (data.spot.valid()) options.spot_shadows->bind(ctx.texture(data.spot));
+            if (data.point.valid()) options.point_shadows->bind(ctx.texture(data.point));
             if (options.count) {
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "lights.evaluations"));
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, counters.request(rc.frame, "lights.exact"));
@@ -544,14 +531,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                 }
             }
             glDisablei(GL_BLEND, 0);
-            if (data.spot.valid()) {
-                glBindSampler(binding::kSpotShadowMap, 0);
-                glBindSampler(binding::kSpotShadowDepth, 0);
-            }
-            if (data.point.valid()) {
-                glBindSampler(binding::kPointShadowMap, 0);
-                glBindSampler(binding::kPointShadowDepth, 0);
-            }
+            if (data.spot.valid()) SpotShadowInput::unbind();
+            if (data.point.valid()) PointShadowInput::unbind();
             if (options.count) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         });
     targets.hdr = d.hdr;

@@ -64,15 +64,22 @@ ProgramList objectPrograms() {
             {"renderer/meshes/shaders/impostor.glsl", {}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS"}},
             {"renderer/meshes/shaders/object.glsl", {"SHADOW_PASS", "ALPHA_MASK"}}};
-    // objects.transparent: unlit by local lights or each method, with the sun's shadows or not,
-    // and each method's further light chunks (objects_forward.cpp builds the same lists).
+    // objects.transparent: every combination forwardDefines() can give, each with the sun's
+    // shadows or not and, with local lights, the further light chunks (objects_forward.cpp).
     const char* forward = "renderer/meshes/shaders/object.glsl";
-    programs.push_back({forward, {"FORWARD"}});
-    programs.push_back({forward, {"FORWARD", "HAS_SUN_SHADOW"}});
-    for (const char* method : {"LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
-        programs.push_back({forward, {"FORWARD", method}});
-        programs.push_back({forward, {"FORWARD", method, "HAS_SUN_SHADOW"}});
-        programs.push_back({forward, {"FORWARD", method, "LIGHT_CHUNK"}});
+    for (const char* method : {"", "LIGHTS_NAIVE", "LIGHTS_TILED", "LIGHTS_CLUSTERED", "LIGHTS_HASHED"}) {
+        const bool lit = method[0] != '\0';
+        for (int shadows = 0; shadows < (lit ? 4 : 1); ++shadows)
+            for (bool fog : {false, true}) {
+                std::vector<std::string> defines = forwardDefines(method, (shadows & 1) != 0, (shadows & 2) != 0, fog);
+                programs.push_back({forward, defines});
+                for (const char* extra : {"HAS_SUN_SHADOW", "LIGHT_CHUNK"}) {
+                    if (!lit && std::string(extra) == "LIGHT_CHUNK") continue;
+                    std::vector<std::string> with = defines;
+                    with.push_back(extra);
+                    programs.push_back({forward, with});
+                }
+            }
     }
     return programs;
 }

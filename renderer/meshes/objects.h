@@ -14,6 +14,7 @@
 #pragma once
 
 #include "config/input_error.h"
+#include "renderer/aerial_volume.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
 #include "renderer/meshes/model.h"
@@ -33,6 +34,14 @@
 
 namespace vista {
 
+// A shadow map a forward pass samples: the pass reads `map`, bind(map texture) binds it with its
+// samplers and uniforms, unbind() puts the samplers back (invalid map: unshadowed).
+struct ForwardShadow {
+    TextureHandle map;
+    std::function<void(GLuint)> bind;
+    std::function<void()> unbind;
+    bool valid() const { return map.valid(); }
+};
 // The light a forward pass needs besides FrameUniforms (renderer/meshes cannot include the
 // lighting: the frame passes what its sun, sky and local lights give).
 struct ForwardLight {
@@ -42,11 +51,9 @@ struct ForwardLight {
     // Each surface is shaded in light_chunks draws of light_chunk lights (LocalLights::chunks(),
     // kLightChunk): the blended one, then the rest added where its depth is equal.
     std::uint32_t light_chunk = 0, light_chunks = 1;
-    // The sun's cascades (renderer/shadows/sun_shadows.h SunShadowInput; invalid: unshadowed):
-    // the pass reads the map, bind_sun_shadow(map texture) binds it, its samplers and uniforms.
-    TextureHandle sun_shadow_map;
-    std::function<void(GLuint)> bind_sun_shadow;
-    std::function<void()> unbind_sun_shadow;
+    ForwardShadow sun_shadow;     // the sun's cascades (renderer/shadows/sun_shadows.h SunShadowInput)
+    ForwardShadow spot_shadows;   // the local lights' spot atlas (spot_shadows.h SpotShadowInput), with lights only
+    ForwardShadow point_shadows;  // their point cubes (point_shadows.h PointShadowInput), with lights only
 };
 // Which BLEND surfaces a transparent pass draws when the sea is on. The sea refracts and absorbs
 // the scene it copies, so glass beyond the water plane (seen through the surface from the eye's
@@ -106,15 +113,21 @@ public:
     bool impostorsBaked() const { return baked_; }
     // Sorts this frame's BLEND items (renderer/meshes/objects_forward.cpp) back to front per
     // (instance, primitive) and uploads the lists; water_level_m: the sea's still surface (NaN:
-    // no sea, one list). Call once a frame before the passes.
-    void sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m);
+    // no sea, one list), wave_height_m: how far its waves reach above and below it (the split
+    // between the sides is the wave band's edge beyond the eye: objects_forward.cpp). Call once a
+    // frame before the passes.
+    void sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m, double wave_height_m = 0.0);
     // "objects.transparent" (EyeSide) and "objects.transparent_beyond_water": the sorted items of
     // that side, forward lit and blended into targets.hdr. Adds nothing when the side has none.
+    // fog (valid): the pass comes after "sky.aerial" and each surface fogs itself with the volume
+    // at its own distance (variant AERIAL_FOG); otherwise the aerial pass, if any, is still to come.
     void addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ForwardLight& light, SceneTargets& targets,
-                            TransparentSide side);
+                            TransparentSide side, const AerialVolume& fog = {});
     bool hasTransparent() const { return !blend_.empty(); }
     std::size_t transparentDrawn() const { return transparent_drawn_; }      // this frame's sorted items
     std::size_t transparentBeyondWater() const { return sides_[0].items.size(); }  // of them drawn before the sea
+    // The highest world height this frame's eye-side items reach (-infinity: none).
+    double transparentTop() const { return transparent_top_; }
     std::size_t transparentDropped() const { return transparent_dropped_; }  // beyond kMaxTransparentItems
     void setSortTransparent(bool on) { sort_transparent_ = on; }  // tests: off draws in placement order
 
@@ -187,6 +200,7 @@ private:
     std::vector<std::uint32_t> near_scratch_;
     bool sort_transparent_ = true;
     std::size_t transparent_drawn_ = 0, transparent_dropped_ = 0;
+    double transparent_top_ = 0.0;
     GLuint shadow_counter_ = 0;        // this frame's objects.shadow_triangles buffer, 0: not counting
     std::size_t instance_count_ = 0, group_count_ = 0;
     float emissive_nits_ = 0.0f;
@@ -194,5 +208,9 @@ private:
 };
 
 ProgramList objectPrograms();
+// The defines of "objects.transparent"'s program (object.glsl FORWARD): the local lights' method
+// ("" without), their spot and point shadows (with a method only), the aerial fog; the pass adds
+// HAS_SUN_SHADOW or LIGHT_CHUNK. objectPrograms() lists every combination from it.
+std::vector<std::string> forwardDefines(const std::string& lights_define, bool spot_shadows, bool point_shadows, bool fog);
 
 }  // namespace vista

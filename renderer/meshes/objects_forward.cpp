@@ -1,14 +1,15 @@
 // "objects.transparent": the BLEND materials of the objects, forward shaded and sorted back to
 // front (see objects.h). The G-buffer holds one surface per pixel, so glass cannot go there: it
-// is drawn after the sea, lit by the sun, the ambient and the same forward light lists the sea
-// reads, and blended premultiplied over what is behind. Sorting is per (instance, primitive) by
-// the distance of the primitive's centre, on the CPU: transparent parts are few (windows), and
-// the nearest kMaxTransparentItems are drawn, one draw each.
-// With the sea, the items are split at the still surface (gl_ClipDistance): what lies beyond the
-// water plane from the eye is drawn before the sea copies the scene, so the sea refracts and
-// absorbs it as it does an opaque object there; the rest after the sea, over it. Depth is written
-// like the sea's: the aerial perspective (and under water, the water's absorption) then treats
-// each pixel at the nearest glass's distance, the glass and what is seen through it alike.
+// is lit by the sun, the ambient and the same forward light lists the sea reads (with the sun's
+// cascades, the spot atlas and the point cubes), and blended premultiplied over what is behind.
+// Sorting is per (instance, primitive) by the distance of the primitive's centre, on the CPU:
+// transparent parts are few (windows), and the nearest kMaxTransparentItems are drawn, one draw each.
+// With the sea, the items are split at the wave band's far edge (gl_ClipDistance): what lies
+// beyond it from the eye is drawn before the sea copies the scene, so the sea refracts and absorbs
+// it as it does an opaque object there; the rest after the sea and the aerial perspective, each
+// fragment fogging itself with the aerial volume at its own distance (AERIAL_FOG). Depth is
+// written like the sea's, so the clouds, the water's absorption under it and the rain stop at the
+// nearest glass.
 // Local lights past the first chunk (ForwardLight::light_chunks > 1: more lights than one shader
 // invocation may loop over on llvmpipe) are added to each item right after its blended draw, one
 // draw per chunk with depth test EQUAL (variant LIGHT_CHUNK: the light only, alpha 0). The blend
@@ -22,8 +23,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vista {
+
+std::vector<std::string> forwardDefines(const std::string& lights_define, bool spot_shadows, bool point_shadows, bool fog) {
+    std::vector<std::string> defines{"FORWARD"};
+    if (!lights_define.empty()) defines.push_back(lights_define);
+    if (spot_shadows) defines.push_back("HAS_SPOT_SHADOWS");
+    if (point_shadows) defines.push_back("HAS_POINT_SHADOWS");
+    if (fog) defines.push_back("AERIAL_FOG");
+    return defines;
+}
 
 void Objects::collectBlend() {
     blend_.clear();
@@ -44,9 +55,10 @@ void Objects::collectBlend() {
     }
 }
 
-void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m) {
+void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m, double wave_height_m) {
     for (Side& side : sides_) side = Side{};
     transparent_drawn_ = transparent_dropped_ = 0;
+    transparent_top_ = -std::numeric_limits<double>::infinity();
     if (blend_.empty()) return;
     // Back to front by the squared distance of each (instance, primitive) centre, in double.
     struct Item {
@@ -83,10 +95,15 @@ void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s,
     transparent_drawn_ = items.size();
     if (items.empty()) return;
 
-    // The water plane: each side keeps the items reaching into it, clipped at the level.
+    // The water plane: each side keeps the items reaching into it, clipped at the split. The split
+    // is the edge of the wave band beyond the eye (the level - wave height for an eye above the
+    // water): glass within the band is drawn after the sea, depth-tested against the moving
+    // surface, so a crest in front of it hides it and it shows over a trough behind it; only what
+    // lies beyond every trough is drawn before the sea and seen through the water.
     const bool water = std::isfinite(water_level_m);
-    const double eye_above = rc.view.position.y - water_level_m;  // > 0: the eye above the water
-    const float sign = eye_above >= 0.0 ? 1.0f : -1.0f;
+    const float sign = rc.view.position.y >= water_level_m ? 1.0f : -1.0f;  // the eye above the still level: 1
+    const double split = water_level_m - double(sign) * std::max(wave_height_m, 0.0);
+    const double eye_above = rc.view.position.y - split;
     Side& beyond = sides_[std::size_t(TransparentSide::BeyondWater)];
     Side& eye = sides_[std::size_t(TransparentSide::EyeSide)];
     // Camera-relative p is at world height p.y + eye y: kept by the eye side where
@@ -101,12 +118,13 @@ void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s,
     for (int k : {0, 1}) {
         Side& side = sides_[std::size_t(k)];
         for (const Item& it : items) {
-            const bool above = it.high_y > water_level_m, below = it.low_y < water_level_m;
+            const bool above = it.high_y > split, below = it.low_y < split;
             const bool on_eye_side = !water || (sign > 0.0f ? above : below);
             const bool on_far_side = water && (sign > 0.0f ? below : above);
             if (k == int(TransparentSide::BeyondWater) ? !on_far_side : !on_eye_side) continue;
             side.items.push_back({std::uint32_t(order.size()), it.blend});
             order.push_back(it.instance);
+            if (k == int(TransparentSide::EyeSide)) transparent_top_ = std::max(transparent_top_, it.high_y);
         }
     }
     if (forward_list_.size() < GLsizeiptr(order.size() * 4))
@@ -116,33 +134,45 @@ void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s,
 }
 
 void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, const ForwardLight& light, SceneTargets& targets,
-                                 TransparentSide which) {
+                                 TransparentSide which, const AerialVolume& fog) {
     const Side& side = sides_[std::size_t(which)];
     if (side.items.empty()) return;
     struct Data {
-        TextureHandle hdr, depth, shadow;
+        TextureHandle hdr, depth, sun, spot, point, inscatter, transmittance;
     };
+    const bool lit = !light.lights_define.empty();
     const char* name = which == TransparentSide::EyeSide ? "objects.transparent" : "objects.transparent_beyond_water";
     const Data& d = graph.addPass<Data>(name,
         [&](PassBuilder& b, Data& data) {
-            if (light.sun_shadow_map.valid()) data.shadow = b.read(light.sun_shadow_map);
+            if (light.sun_shadow.valid()) data.sun = b.read(light.sun_shadow.map);
+            if (lit && light.spot_shadows.valid()) data.spot = b.read(light.spot_shadows.map);
+            if (lit && light.point_shadows.valid()) data.point = b.read(light.point_shadows.map);
+            if (fog.valid()) {
+                data.inscatter = b.read(fog.inscatter);
+                data.transmittance = b.read(fog.transmittance);
+            }
             data.hdr = b.write(targets.hdr);
             data.depth = b.write(targets.depth);
         },
-        [this, &rc, light, side](const Data& data, PassContext& ctx) {
+        [this, &rc, light, side, lit, layout = fog.layout](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, ctx.texture(data.depth)), desc.width, desc.height);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
-            // Depth written like the sea's, so the aerial perspective fogs the glass at its own
-            // distance; drawn back to front, each item is nearer than what it covers.
+            // Depth written like the sea's: what comes after (clouds, the view under water, rain)
+            // stops at the nearest glass; drawn back to front, each item is nearer than what it covers.
             glDepthMask(GL_TRUE);
             glEnable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
             if (side.clipped) glEnable(GL_CLIP_DISTANCE0);
-            std::vector<std::string> defines{"FORWARD"};
-            if (!light.lights_define.empty()) defines.push_back(light.lights_define);
-            const bool lit = !light.lights_define.empty();
+            // Variants: the local lights' method, their spot and point shadows, and the aerial
+            // perspective when the pass comes after it; the further chunks shade the same lights.
+            std::vector<std::string> defines =
+                forwardDefines(light.lights_define, data.spot.valid(), data.point.valid(), data.inscatter.valid());
+            if (data.inscatter.valid()) {
+                glBindTextureUnit(binding::kAerialInscatter, ctx.texture(data.inscatter));
+                glBindTextureUnit(binding::kAerialTransmittance, ctx.texture(data.transmittance));
+            }
             const std::uint32_t chunks = lit ? std::max<std::uint32_t>(light.light_chunks, 1) : 1;
             GLuint chunk_program = 0;
             if (chunks > 1) {
@@ -152,10 +182,12 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             }
             // The sun's cascades shade the glass as they shade the G-buffer (a variant; the local
             // lights' further chunks need no sun).
-            if (data.shadow.valid()) {
+            if (data.sun.valid()) {
                 defines.push_back("HAS_SUN_SHADOW");
-                light.bind_sun_shadow(ctx.texture(data.shadow));
+                light.sun_shadow.bind(ctx.texture(data.sun));
             }
+            if (data.spot.valid()) light.spot_shadows.bind(ctx.texture(data.spot));
+            if (data.point.valid()) light.point_shadows.bind(ctx.texture(data.point));
             const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
             glUseProgram(program);
             if (light.bind_lights) light.bind_lights();
@@ -165,6 +197,7 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                 glProgramUniform3f(p, 1, camera.x, camera.y, camera.z);
                 glProgramUniformMatrix4fv(p, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
                 glProgramUniform4f(p, 11, side.clip.x, side.clip.y, side.clip.z, side.clip.w);
+                if (data.inscatter.valid()) glProgramUniform4f(p, 12, layout.x, layout.y, layout.z, layout.w);
             }
             glProgramUniform3f(program, 7, light.sun_irradiance.r, light.sun_irradiance.g, light.sun_irradiance.b);
             glProgramUniform3f(program, 8, light.sky_up.r, light.sky_up.g, light.sky_up.b);
@@ -200,7 +233,9 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                 glUseProgram(program);
             }
             for (int u = 0; u < 5; ++u) glBindSampler(GLuint(binding::kTex0 + u), 0);
-            if (data.shadow.valid() && light.unbind_sun_shadow) light.unbind_sun_shadow();
+            for (const auto& [map, shadow] : {std::pair{data.sun, &light.sun_shadow}, std::pair{data.spot, &light.spot_shadows},
+                                              std::pair{data.point, &light.point_shadows}})
+                if (map.valid() && shadow->unbind) shadow->unbind();
             glBindVertexArray(rc.empty_vao);
             glDisable(GL_CLIP_DISTANCE0);
             glDisable(GL_CULL_FACE);

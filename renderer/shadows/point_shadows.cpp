@@ -12,6 +12,19 @@
 
 namespace vista {
 
+void PointShadowInput::bind(GLuint texture) const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, uniforms);
+    glBindTextureUnit(binding::kPointShadowMap, texture);
+    glBindSampler(binding::kPointShadowMap, compare_sampler);
+    glBindTextureUnit(binding::kPointShadowDepth, texture);
+    glBindSampler(binding::kPointShadowDepth, depth_sampler);
+}
+
+void PointShadowInput::unbind() {
+    glBindSampler(binding::kPointShadowMap, 0);
+    glBindSampler(binding::kPointShadowDepth, 0);
+}
+
 namespace {
 
 // std140 mirror of PointShadowUniforms in renderer/shadows/shaders/point_shadows.glsl.

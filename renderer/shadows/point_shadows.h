@@ -57,6 +57,10 @@ struct PointShadowInput {
     GLuint compare_sampler = 0;  // depth compare (GEQUAL, reversed-Z), bilinear
     GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search, debug view)
     bool valid() const { return cubes.valid(); }
+    // Binds the uniforms and the cubes (this pass's texture of `cubes`) with both samplers at the
+    // kPointShadow* bindings lights.glsl reads (HAS_POINT_SHADOWS); unbind() takes the samplers off again.
+    void bind(GLuint texture) const;
+    static void unbind();
 };
 
 struct PointShadowStats {

@@ -14,6 +14,19 @@
 
 namespace vista {
 
+void SpotShadowInput::bind(GLuint texture) const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kSpotShadowUniforms, uniforms);
+    glBindTextureUnit(binding::kSpotShadowMap, texture);
+    glBindSampler(binding::kSpotShadowMap, compare_sampler);
+    glBindTextureUnit(binding::kSpotShadowDepth, texture);
+    glBindSampler(binding::kSpotShadowDepth, depth_sampler);
+}
+
+void SpotShadowInput::unbind() {
+    glBindSampler(binding::kSpotShadowMap, 0);
+    glBindSampler(binding::kSpotShadowDepth, 0);
+}
+
 namespace {
 
 // std140 mirror of SpotShadowUniforms in renderer/shadows/shaders/spot_shadows.glsl.

@@ -79,6 +79,10 @@ struct SpotShadowInput {
     GLuint compare_sampler = 0;  // depth compare (GEQUAL, reversed-Z), bilinear
     GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search)
     bool valid() const { return atlas.valid(); }
+    // Binds the uniforms and the atlas (this pass's texture of `atlas`) with both samplers at the
+    // kSpotShadow* bindings lights.glsl reads (HAS_SPOT_SHADOWS); unbind() takes the samplers off again.
+    void bind(GLuint texture) const;
+    static void unbind();
 };
 
 struct SpotShadowStats {

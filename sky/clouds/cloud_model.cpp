@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace vista {
@@ -102,6 +103,14 @@ bool cloudLayerActive(const CloudLayerSettings& layer) {
 
 bool cloudsActive(const CloudsSettings& clouds) {
     return clouds.enabled && (cloudLayerActive(clouds.low) || cloudLayerActive(clouds.high));
+}
+
+double cloudsLowestBaseM(const CloudsSettings& clouds) {
+    double base = std::numeric_limits<double>::infinity();
+    if (!clouds.enabled) return base;
+    for (const CloudLayerSettings* layer : {&clouds.low, &clouds.high})
+        if (cloudLayerActive(*layer)) base = std::min(base, double(layer->base_m));
+    return base;
 }
 
 namespace {

@@ -49,6 +49,9 @@ ShellSegment cloudShellSegment(double r, double mu, double ground_r, double r_bo
 bool cloudLayerActive(const CloudLayerSettings& layer);
 // Whether [clouds] draws anything: enabled with at least one active layer.
 bool cloudsActive(const CloudsSettings& clouds);
+// The lowest altitude (m above sea level, y = 0) a cloud can be at: the base of the lowest active
+// layer (+infinity: none, or [clouds] off).
+double cloudsLowestBaseM(const CloudsSettings& clouds);
 
 // How far (m, world x and z) the wind has carried a layer's pattern at time t (s): the mean
 // drift wind_speed along wind_direction_deg times t, plus a bounded random walk whose velocity

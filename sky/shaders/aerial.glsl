@@ -1,7 +1,7 @@
 // "sky.aerial": aerial perspective on every pixel at finite depth. The pixel's distance comes
 // from the depth buffer; the froxel volume (aerial_volume.glsl) is read with trilinear
-// interpolation (bilinear across the screen inside a slice, linear in distance between slice
-// ends, from (0, 1) at the camera) and applied by dual-source blending:
+// interpolation (renderer/shaders/aerial_fetch.glsl, as the glass drawn after this pass reads it)
+// and applied by dual-source blending:
 // hdr = hdr * transmittance + in-scattering. Pixels at infinite depth (the sky) are left alone.
 // A camera above the atmosphere has no volume: each pixel marches its own ray through the air.
 #include "../../renderer/shaders/fullscreen.glsl"
@@ -9,6 +9,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
+#include "../../renderer/shaders/aerial_fetch.glsl"
 #define SKY_TEX_TRANSMITTANCE BINDING_TEX_3
 #define SKY_TEX_MULTISCATTER BINDING_TEX_4
 #define SKY_TRANSMITTANCE_LUT
@@ -21,16 +22,6 @@ layout(binding = BINDING_TEX_2) uniform sampler2D u_aerial_transmittance;
 in vec2 v_uv;
 layout(location = 0, index = 0) out vec4 o_inscatter;
 layout(location = 0, index = 1) out vec4 o_transmittance;
-
-// Bilinear inside slice k's tile, never across tiles: the filtered coordinate stays between the
-// tile's first and last texel centres.
-void fetchSlice(int k, vec2 uv, out vec3 inscatter, out vec3 transmittance) {
-    float size = a_aerial.y;
-    vec2 f = clamp(uv * (size - 1.0), vec2(0.0), vec2(size - 1.0)) + 0.5;
-    vec2 atlas_uv = vec2((float(k) * size + f.x) / (size * a_aerial.z), f.y / size);
-    inscatter = texture(u_inscatter, atlas_uv).rgb;
-    transmittance = texture(u_aerial_transmittance, atlas_uv).rgb;
-}
 
 void main() {
     float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
@@ -52,19 +43,9 @@ void main() {
         o_transmittance = vec4(clamp(sums.transmittance, vec3(0.0), vec3(1.0)), 1.0);
         return;
     }
-    int slices = int(a_aerial.z);
-    // Slice k ends at range ((k + 1) / slices)^2; "slice -1" is the camera itself.
-    float s = clamp(sqrt(max(t / a_aerial.x, 0.0)) * float(slices) - 1.0, -1.0, float(slices - 1));
-    int k1 = clamp(int(ceil(s)), 0, slices - 1), k0 = k1 - 1;
-    float x0 = float(k0 + 1) / float(slices), x1 = float(k1 + 1) / float(slices);
-    float t0 = a_aerial.x * x0 * x0, t1 = a_aerial.x * x1 * x1;
-    float w = clamp((t - t0) / max(t1 - t0, 1e-9), 0.0, 1.0);
-    vec3 s0 = vec3(0.0), tr0 = vec3(1.0), s1, tr1;
-    if (k0 >= 0) fetchSlice(k0, v_uv, s0, tr0);
-    fetchSlice(k1, v_uv, s1, tr1);
-    vec3 inscatter = skyRgb(mix(s0, s1, w));
-    vec3 transmittance = mix(tr0, tr1, w);
-    o_inscatter = vec4(clamp(inscatter, vec3(0.0), vec3(60000.0)), 0.0);
-    o_transmittance = vec4(clamp(transmittance, vec3(0.0), vec3(1.0)), 1.0);
+    vec3 inscatter, transmittance;
+    aerialFetch(u_inscatter, u_aerial_transmittance, a_aerial, v_uv, t, inscatter, transmittance);
+    o_inscatter = vec4(inscatter, 0.0);
+    o_transmittance = vec4(transmittance, 1.0);
 }
 #endif

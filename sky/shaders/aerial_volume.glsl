@@ -1,9 +1,11 @@
 // "sky.aerial_volume": the aerial-perspective froxel volume (Hillaire 2020). For a grid of view
 // rays through the screen (aerial size x size, edge to edge) and depth slices at distance
-// range * ((k + 1) / slices)^2 (dense near the camera), the in-scattered radiance (rgb, per unit
-// solar irradiance) and the transmittance (rgb) from the camera to the end of each slice, both
+// range * ((k + 1) / slices)^2 (dense near the camera), the in-scattered radiance (HDR linear
+// sRGB: skyRgb of the three samples, a linear map, so interpolating after it is the same) and
+// the transmittance (rgb) from the camera to the end of each slice, both
 // integrated exactly per step for a constant medium, as the sky-view LUT does. The slices lie
-// side by side in two 2D atlases (slice k at x = k * size) so the frame graph can pool them.
+// side by side in two 2D atlases (slice k at x = k * size) so the frame graph can pool them
+// (renderer/aerial_volume.h: the glass reads them too).
 #ifdef COMPUTE_SHADER
 #include "../../renderer/shaders/common.glsl"
 #define SKY_TEX_TRANSMITTANCE BINDING_TEX_0
@@ -42,7 +44,7 @@ void main() {
         }
         t_prev = t_end;
         ivec2 texel = ivec2(k * size + p.x, p.y);
-        imageStore(u_inscatter, texel, vec4(radiance, 1.0));
+        imageStore(u_inscatter, texel, vec4(clamp(skyRgb(radiance), vec3(0.0), vec3(60000.0)), 1.0));
         imageStore(u_aerial_transmittance, texel, vec4(transmittance, 1.0));
     }
 }

@@ -588,6 +588,60 @@ TEST_CASE("gl: a transparent pane partly under the sea is seen through the water
     CHECK(error < 0.03);
 }
 
+// Glass within a wave's height of the level (docs/objects.md, the wave band): the split between
+// the glass drawn before the sea and after it is the band's far edge, so a pane dipping into the
+// band but not below it is drawn whole after the sea (depth-tested against the moving surface);
+// on a calm sea the same pane is split at the still level.
+TEST_CASE("gl: glass within the waves' reach of the level is drawn after the sea, glass below every trough before it") {
+    PaneFiles files;
+    Settings calm = seaScene(files.flat);
+    Settings waves = calm;
+    waves.water.amplitude_scale = 1.0f;
+    const double level = double(calm.water.level_m);
+    const ViewParams view{{0.0, level + 4.0, 0.0}, 0.0, -14.0, 40.0, 0.1f, 160, 90};
+    auto frame = [&](const Settings& s, double bottom) {
+        return render(withObjects(s, {{"pane", placed(files.red, glm::dvec3(0.0, bottom, -8.0), 1.0f)}}), view);
+    };
+    const test::RenderedFrame probe = frame(waves, level);
+    REQUIRE(test::compiledFileRenderer().water() != nullptr);
+    const double reach = test::compiledFileRenderer().water()->waves().max_height;
+    INFO("waves reach " << reach << " m");
+    REQUIRE(reach > 0.2);
+    const double dip = 0.5 * reach;  // the pane's bottom this far under the level: inside the band
+    CHECK(frame(calm, level - dip).report.counters.at("objects.transparent_beyond_water") == 1.0);
+    const test::RenderedFrame within = frame(waves, level - dip);
+    CHECK(within.report.counters.at("objects.transparent_beyond_water") == 0.0);
+    CHECK(within.report.counters.at("objects.transparent") == 1.0);
+    const test::RenderedFrame deeper = frame(waves, level - 2.0 * reach);  // reaches below every trough
+    CHECK(deeper.report.counters.at("objects.transparent_beyond_water") == 1.0);
+    for (float v : within.rgba) REQUIRE(std::isfinite(v));
+}
+
+// Whether the glass goes over the clouds or under them: over them when no cloud can be between
+// the eye and the glass (both below the lowest layer's base), so the clouds behind a pane are
+// seen through it; under them when the eye is above the base.
+TEST_CASE("gl: glass is drawn after the clouds from below their base and before them from above it") {
+    PaneFiles files;
+    Settings s = paneScene(files.flat);
+    s.sky.enabled = true;
+    s.clouds.enabled = true;
+    s.objects.max_distance_m = 10000.0f;
+    const double ground = kFlat * kHeightScale;
+    const Settings scene = withObjects(s, {{"pane", placed(files.red, glm::dvec3(0.0, ground, -2000.0), 100.0f)}});
+    auto order = [&](double eye_y) {
+        const ViewParams view{{0.0, eye_y, 0.0}, 0.0, -2.0, 40.0, 0.1f, 96, 54};
+        const test::RenderedFrame f = render(scene, view);
+        const auto& p = f.report.executed;
+        const auto glass = std::find(p.begin(), p.end(), "objects.transparent"), shell = std::find(p.begin(), p.end(), "clouds.shell");
+        REQUIRE(glass != p.end());
+        REQUIRE(shell != p.end());
+        CHECK(f.report.counters.at("objects.transparent_fogged") == 1.0);
+        return glass < shell ? -1 : 1;
+    };
+    CHECK(order(ground + 50.0) == 1);                       // below the base (1500 m): the clouds first
+    CHECK(order(double(s.clouds.low.base_m) + 300.0) == -1);  // above it: the glass first
+}
+
 TEST_CASE("gl: a distant transparent pane is fogged like an opaque pane at the same distance") {
     PaneFiles files;
     Settings fog = paneScene(files.flat);
@@ -628,6 +682,106 @@ TEST_CASE("gl: a distant transparent pane is fogged like an opaque pane at the s
     CHECK(error < 0.03);
 }
 
+// The glass fogs itself (object.glsl AERIAL_FOG, drawn after sky.aerial): a pane 2.5 km away,
+// seen from 270 m up against the ground (1.5 km behind it, to the island's edge) and the sky
+// beyond. From first principles, the pixel is what reaches the eye from the pane's place,
+// dimmed and added to by the air in front: T (C + (1 - a) B_g) + L, where B_g is the light
+// reaching the pane from behind; the fogged frame without the pane holds B = T B_g + L, so the
+// pixel is T C + a L + (1 - a) B. C (the pane's own light) comes from the frame without aerial
+// perspective, C = P - (1 - a) B_clear; T and L from two opaque panes at the same place with and
+// without it (y = T x + L per channel). The old order (the glass before sky.aerial, fogged as an
+// opaque surface at its depth) gives T (C + (1 - a) B_clear) + L instead: the background seen
+// through the pane gets the pane's fog over (or instead of) its own.
+TEST_CASE("gl: a far transparent pane fogs itself at its own distance over a background fogged to its own") {
+    PaneFiles files;
+    Settings fog = paneScene(files.flat);
+    fog.sky.enabled = true;
+    fog.clouds.enabled = false;
+    fog.sky.height_fog = true;
+    fog.sky.fog_density_per_km = 2.0f;  // falling off over 200 m: dense under the camera, thin above it
+    fog.objects.max_distance_m = 10000.0f;
+    fog.objects.impostor_distance_m = fog.objects.max_distance_m;  // meshes, no impostors
+    Settings clear = fog;
+    clear.sky.aerial_perspective = false;
+    const double ground = kFlat * kHeightScale;
+    const glm::dvec3 base(0.0, ground, -2500.0);
+    const ViewParams view{{0.0, ground + 270.0, 0.0}, 0.0, -4.5, 20.0, 0.1f, 160, 90};
+    auto with = [&](const Settings& s, const std::filesystem::path& file) {
+        return withObjects(s, {{"pane", placed(file, base, 100.0f)}});
+    };
+    const auto points = paneGrid(base, 100.0, 0.0, -0.7, 0.7, 0.2, 1.8);
+
+    const test::RenderedFrame frame = render(with(fog, files.red), view);
+    CHECK(frame.report.counters.at("objects.transparent_fogged") == 1.0);
+    const auto& passes = frame.report.executed;
+    const auto order = [&](const char* name) { return std::find(passes.begin(), passes.end(), name) - passes.begin(); };
+    CHECK(order("sky.aerial") < order("objects.transparent"));
+    const auto p = pixelsAt(frame, view, points);
+    const auto b = pixelsAt(render(withObjects(fog, {}), view), view, points);
+    const auto p_clear = pixelsAt(render(with(clear, files.red), view), view, points);
+    const auto b_clear = pixelsAt(render(withObjects(clear, {}), view), view, points);
+    const auto y_a = pixelsAt(render(with(fog, files.light), view), view, points);
+    const auto y_b = pixelsAt(render(with(fog, files.dark), view), view, points);
+    const auto x_a = pixelsAt(render(with(clear, files.light), view), view, points);
+    const auto x_b = pixelsAt(render(with(clear, files.dark), view), view, points);
+    const float a = 0.5f;
+    std::vector<glm::vec3> expected(points.size()), old_order(points.size());
+    double kept = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::vec3 t = (y_a[i] - y_b[i]) / (x_a[i] - x_b[i]), l = y_a[i] - t * x_a[i];
+        const glm::vec3 c = p_clear[i] - (1.0f - a) * b_clear[i];
+        expected[i] = t * c + a * l + (1.0f - a) * b[i];
+        old_order[i] = t * (c + (1.0f - a) * b_clear[i]) + l;
+        kept += double(t.g) / double(points.size());
+    }
+    INFO("transmittance to the pane " << kept);
+    CHECK(kept > 0.05);  // the fog is strong there (measured 0.17), but the pane shows through it
+    CHECK(kept < 0.5);
+    const double error = relativeError(p, expected), old_error = relativeError(old_order, expected);
+    INFO("relative error " << error << ", the old order's " << old_error);
+    CHECK(error < 0.01);       // measured 0.0002
+    CHECK(old_error > 0.04);  // the test tells the orders apart (measured 0.069)
+}
+
+namespace {
+
+// How much of a light the glass keeps where a shadow falls on it, against an opaque pane. The
+// pane (red glass, or the light opaque one) stands at `base` turned by yaw; `shadowed` and
+// `unshadowed` are the same scene with the light's shadows on and off. The glass's own light is
+// C = P - (1 - a) B (B: the same view without the pane), summed over each area.
+struct ShadowShare {
+    double glass = 0.0;       // red: C in the shaded area with shadows over C without them
+    double opaque = 0.0;      // red: the same for the opaque pane's pixels
+    double lit_change = 0.0;  // red: C in the lit area with shadows over C without them
+};
+ShadowShare shadowShare(const PaneFiles& files, const Settings& shadowed, const Settings& unshadowed, glm::dvec3 base,
+                        double scale, double yaw_deg, const ViewParams& view, const std::vector<glm::dvec3>& shaded,
+                        const std::vector<glm::dvec3>& lit) {
+    auto with = [&](const Settings& settings, const std::filesystem::path& file) {
+        return withObjects(settings, {{"pane", placed(file, base, float(scale), float(yaw_deg), 0.5f)}});
+    };
+    auto own = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
+        const test::RenderedFrame p = render(with(settings, files.red), view), b = render(withObjects(settings, {}), view);
+        const auto pp = pixelsAt(p, view, points), bb = pixelsAt(b, view, points);
+        glm::dvec3 sum(0.0);
+        for (std::size_t i = 0; i < pp.size(); ++i) sum += glm::dvec3(pp[i] - 0.5f * bb[i]);
+        return sum;
+    };
+    auto opaque = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
+        const auto pp = pixelsAt(render(with(settings, files.light), view), view, points);
+        glm::dvec3 sum(0.0);
+        for (const glm::vec3& v : pp) sum += glm::dvec3(v);
+        return sum;
+    };
+    ShadowShare share;
+    share.glass = own(shadowed, shaded).r / own(unshadowed, shaded).r;
+    share.opaque = opaque(shadowed, shaded).r / opaque(unshadowed, shaded).r;
+    share.lit_change = own(shadowed, lit).r / own(unshadowed, lit).r;
+    return share;
+}
+
+}  // namespace
+
 TEST_CASE("gl: a transparent pane half in a pillar's sun shadow is darker there by the share the sun gives an opaque pane") {
     PaneFiles files;
     Settings s = paneScene(test::pillarHeightmap("pane_shadow"));
@@ -645,35 +799,65 @@ TEST_CASE("gl: a transparent pane half in a pillar's sun shadow is darker there 
     // seen from 11 m along its normal.
     const glm::dvec3 base(-15.0, 0.0, -5.5);
     const ViewParams view{{-7.0, 4.5, 2.5}, -45.0, 0.0, 40.0, 0.1f, 160, 90};
-    auto with = [&](const Settings& settings, const std::filesystem::path& file) {
-        return withObjects(settings, {{"pane", placed(file, base, 4.0f, 45.0f, 0.5f)}});
-    };
     const glm::dvec3 standing = base + glm::dvec3(0.0, 0.5, 0.0);
-    const auto shaded = paneGrid(standing, 4.0, 45.0, -0.9, -0.6, 0.3, 1.3);
-    const auto lit = paneGrid(standing, 4.0, 45.0, 0.6, 0.9, 0.3, 1.3);
+    const ShadowShare share = shadowShare(files, s, unshadowed, base, 4.0, 45.0, view,
+                                          paneGrid(standing, 4.0, 45.0, -0.9, -0.6, 0.3, 1.3),
+                                          paneGrid(standing, 4.0, 45.0, 0.6, 0.9, 0.3, 1.3));
+    INFO("glass in the shadow keeps " << share.glass << ", an opaque pane " << share.opaque);
+    CHECK(share.lit_change == doctest::Approx(1.0).epsilon(0.03));  // the lit half is as without shadows
+    CHECK(share.opaque < 0.7);                                      // the shadow is there
+    CHECK(share.glass == doctest::Approx(share.opaque).epsilon(0.08));
+}
 
-    // The glass's own light C = P - (1 - a) B (B: the same view without it), summed over an area.
-    auto own = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
-        const test::RenderedFrame p = render(with(settings, files.red), view), b = render(withObjects(settings, {}), view);
-        const auto pp = pixelsAt(p, view, points), bb = pixelsAt(b, view, points);
-        glm::dvec3 sum(0.0);
-        for (std::size_t i = 0; i < pp.size(); ++i) sum += glm::dvec3(pp[i] - 0.5f * bb[i]);
-        return sum;
-    };
-    auto opaque = [&](const Settings& settings, const std::vector<glm::dvec3>& points) {
-        const auto pp = pixelsAt(render(with(settings, files.light), view), view, points);
-        glm::dvec3 sum(0.0);
-        for (const glm::vec3& v : pp) sum += glm::dvec3(v);
-        return sum;
-    };
-    const glm::dvec3 glass_shaded = own(s, shaded), glass_lit = own(s, lit);
-    const glm::dvec3 glass_shaded_off = own(unshadowed, shaded), glass_lit_off = own(unshadowed, lit);
-    const double ratio = glass_shaded.r / glass_shaded_off.r;
-    const double expected = opaque(s, shaded).r / opaque(unshadowed, shaded).r;
-    INFO("glass in the shadow keeps " << ratio << ", an opaque pane " << expected);
-    CHECK(glass_lit.r == doctest::Approx(glass_lit_off.r).epsilon(0.03));  // the lit half is as without shadows
-    CHECK(expected < 0.7);                                                 // the shadow is there
-    CHECK(ratio == doctest::Approx(expected).epsilon(0.08));
+// The local lights' shadows reach the glass (object.glsl FORWARD + HAS_SPOT_SHADOWS /
+// HAS_POINT_SHADOWS): at night, a lamp 20 m east of the pillar (11.4 m wide at the lamp's height)
+// throws its shadow west; at x = -15 its edge is near z = -11.5. A pane there facing the lamp, from
+// z = -6 (shadowed) to -17 m (lit), is darker in the shadow by the share an opaque pane loses, and
+// as bright as without shadows in the light. A spot aimed at the pane, then a point light.
+TEST_CASE("gl: a transparent pane half in a pillar's spot or point-light shadow is darker there like an opaque pane") {
+    PaneFiles files;
+    Settings s = paneScene(test::pillarHeightmap("pane_shadow"));
+    s.terrain.size_m = 256.0f;
+    s.terrain.height_scale_m = 40.0f;
+    s.sky.enabled = true;
+    s.sky.aerial_perspective = false;  // the shadow alone acts on the glass
+    s.clouds.enabled = false;
+    s.sky.sun_elevation_deg = -30.0f;  // night: the lamp is the light
+    s.shadows.enabled = true;
+    s.lights.enabled = true;
+    Light lamp;
+    lamp.position = glm::dvec3(20.0, 6.0, -1.7);
+    lamp.radius_m = 80.0f;
+    lamp.intensity = 2000.0f;
+    const glm::dvec3 base(-15.0, 0.0, -11.5);
+    const ViewParams view{{5.0, 6.0, -11.5}, -90.0, -5.0, 50.0, 0.1f, 160, 90};  // looking west
+    const glm::dvec3 standing = base + glm::dvec3(0.0, 0.5, 0.0);
+    // yaw 90: the pane's normal is +x (towards the lamp), its u axis -z.
+    const auto shaded = paneGrid(standing, 5.5, 90.0, -0.85, -0.55, 0.3, 1.3);  // z -6.8 .. -8.5
+    const auto lit = paneGrid(standing, 5.5, 90.0, 0.55, 0.85, 0.3, 1.3);       // z -14.5 .. -16.2
+    for (const LightType type : {LightType::Spot, LightType::Point}) {
+        Light l = lamp;
+        l.type = type;
+        l.direction = glm::normalize(glm::vec3(-35.0f, -3.0f, -9.8f));  // spot: towards the pane's middle
+        l.inner_deg = 40.0f;
+        l.outer_deg = 60.0f;
+        Settings shadowed = s;
+        shadowed.lights.lights = {{"lamp", l}};
+        shadowed.shadows.spot_enabled = type == LightType::Spot;
+        shadowed.shadows.point_enabled = type == LightType::Point;
+        shadowed.shadows.point_resolution = 512;
+        Settings unshadowed = shadowed;
+        unshadowed.shadows.spot_enabled = unshadowed.shadows.point_enabled = false;
+        const test::RenderedFrame frame = render(withObjects(shadowed, {{"pane", placed(files.red, base, 5.5f, 90.0f, 0.5f)}}), view);
+        const char* counter = type == LightType::Spot ? "shadows.spot_shadowed" : "shadows.point_shadowed";
+        CHECK(frame.report.counters.at(counter) == 1.0);
+        const ShadowShare share = shadowShare(files, shadowed, unshadowed, base, 5.5, 90.0, view, shaded, lit);
+        INFO(std::string(type == LightType::Spot ? "spot" : "point") << ": glass in the shadow keeps " << share.glass
+             << ", an opaque pane " << share.opaque << ", the lit part " << share.lit_change);
+        CHECK(share.lit_change == doctest::Approx(1.0).epsilon(0.05));
+        CHECK(share.opaque < 0.5);  // measured 1e-7: the lamp is the only light, the pillar hides it
+        CHECK(std::abs(share.glass - share.opaque) < 0.05);  // unshadowed glass kept 1.0
+    }
 }
 
 }  // namespace transparent_case

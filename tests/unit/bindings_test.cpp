@@ -44,4 +44,6 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kObjectCounts == BINDING_OBJECT_COUNTS);
     CHECK(binding::kObjectDraws == BINDING_OBJECT_DRAWS);
     CHECK(binding::kObjectModels == BINDING_OBJECT_MODELS);
+    CHECK(binding::kAerialInscatter == BINDING_AERIAL_INSCATTER);
+    CHECK(binding::kAerialTransmittance == BINDING_AERIAL_TRANSMITTANCE);
 }

@@ -17,7 +17,13 @@
 // gl_Position is invariant in the FORWARD variants so the two draws' depths are equal. FORWARD
 // writes gl_ClipDistance[0] = dot(u_clip, (p, 1)) (the pass enables it only with the sea: the
 // water plane splits the glass drawn before and after the sea). FORWARD + HAS_SUN_SHADOW: the
-// sun's cascades shadow the glass as they shadow the G-buffer.
+// sun's cascades shadow the glass as they shadow the G-buffer; FORWARD + HAS_SPOT_SHADOWS /
+// HAS_POINT_SHADOWS (with a lights method): the local lights' spot atlas and point cubes shadow it
+// as they shadow lights.shade (lights.glsl). FORWARD + AERIAL_FOG: the pass comes after
+// "sky.aerial", and the surface fogs itself at its own distance from the aerial-perspective volume
+// (renderer/aerial_volume.h): out = (T C + a L, a) for its premultiplied light C and coverage a,
+// T and L the volume's transmittance and in-scattering there; blended over the fogged scene this
+// is T (C + (1 - a) B) + L, exact for one pane over a background B fogged to its own depth.
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "object_common.glsl"
@@ -37,6 +43,7 @@ layout(location = 8) uniform vec3 u_sky_up;          // FORWARD: sky irradiance 
 layout(location = 9) uniform vec3 u_ground_up;       // FORWARD: ground bounce on a down-facing surface
 layout(location = 10) uniform uvec2 u_light_chunk;   // FORWARD with lights: this draw's chunk of each light range (lights.glsl chunkOf)
 layout(location = 11) uniform vec4 u_clip;           // FORWARD: camera-relative plane, kept where dot(u_clip, (p, 1)) >= 0
+layout(location = 12) uniform vec4 u_aerial;         // AERIAL_FOG: the volume's layout (renderer/shaders/aerial_fetch.glsl)
 layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
 
 #ifdef VERTEX_SHADER
@@ -91,6 +98,16 @@ void main() {
 #endif
 #if defined(FORWARD) && defined(HAS_SUN_SHADOW)
 #include "../../../renderer/shadows/shaders/shadows.glsl"
+#endif
+#include "../../../renderer/shaders/aerial_fetch.glsl"
+#if defined(FORWARD) && defined(AERIAL_FOG)
+layout(binding = BINDING_AERIAL_INSCATTER) uniform sampler2D t_aerial_inscatter;
+layout(binding = BINDING_AERIAL_TRANSMITTANCE) uniform sampler2D t_aerial_transmittance;
+// The air between the eye and this fragment: in-scattering (HDR) and transmittance.
+void fragmentFog(vec3 position, out vec3 inscatter, out vec3 transmittance) {
+    aerialFetch(t_aerial_inscatter, t_aerial_transmittance, u_aerial, gl_FragCoord.xy * u_viewport.zw,
+                length(position) * 1e-3, inscatter, transmittance);
+}
 #endif
 layout(binding = BINDING_TEX_0) uniform sampler2D t_base_color;
 in vec2 v_uv;
@@ -180,6 +197,11 @@ void main() {
 #ifdef LIGHT_CHUNK
     uint exact;
     o_color = vec4(shadeRange(range, s, v_position, v, exact), 0.0);
+#ifdef AERIAL_FOG
+    vec3 fog_in, fog_t;
+    fragmentFog(v_position, fog_in, fog_t);
+    o_color.rgb *= fog_t;  // added light: dimmed by the air in front, no in-scattering of its own
+#endif
 #else
     vec3 l = u_sun_dir.xyz;
     vec3 color = evalBrdf(s.albedo, s.roughness, s.f0, n, l, v) * u_sun_irradiance * (sun_visible * max(dot(n, l), 0.0));
@@ -193,6 +215,11 @@ void main() {
     color += forwardLocalLights(s, v_position, ivec2(gl_FragCoord.xy), u_light_chunk, evaluated, exact);
 #endif
     o_color = vec4(color + emissive, alpha);
+#ifdef AERIAL_FOG
+    vec3 fog_in, fog_t;
+    fragmentFog(v_position, fog_in, fog_t);
+    o_color.rgb = fog_t * o_color.rgb + alpha * fog_in;
+#endif
 #endif
 #else
     encodeSurface(s, o_albedo, o_normal);
