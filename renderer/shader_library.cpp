@@ -192,6 +192,12 @@ ShaderLibrary::Program* ShaderLibrary::get(const fs::path& file, const std::vect
     return p;
 }
 
+std::vector<std::string> ShaderLibrary::names() const {
+    std::vector<std::string> out;
+    for (const auto& [key, p] : programs_) out.push_back(key);
+    return out;
+}
+
 int ShaderLibrary::poll() {
     auto now = std::chrono::steady_clock::now();
     if (now - last_poll_ < poll_interval) return 0;
