@@ -221,6 +221,12 @@ void ShaderLibrary::addListed(const ProgramKey& key) { listed_.insert(key.text()
 
 bool ShaderLibrary::listed(const ProgramKey& key) const { return !restricted_ || listed_.count(key.text()) > 0; }
 
+std::vector<std::string> ShaderLibrary::names() const {
+    std::vector<std::string> out;
+    for (const auto& [key, p] : programs_) out.push_back(key);
+    return out;
+}
+
 int ShaderLibrary::poll() {
     auto now = std::chrono::steady_clock::now();
     if (now - last_poll_ < poll_interval) return 0;

@@ -93,6 +93,8 @@ public:
     std::vector<std::string> errors() const;
     const std::string& lastError() const { return last_error_; }
     std::size_t size() const { return programs_.size(); }
+    // The name (file plus defines) of every program asked for so far: what the frames used.
+    std::vector<std::string> names() const;
     const std::filesystem::path& root() const { return root_; }
 
     std::chrono::milliseconds poll_interval{250};

@@ -226,3 +226,55 @@ TEST_CASE("gl: tessellation off leaves no patch and no counter, on: only near qu
     test::RenderedFrame off = test::renderFrame(renderer(), s, view);
     CHECK(off.report.counters.count("terrain.tess_patches") == 0);
 }
+
+TEST_CASE("gl: POM and tessellation off compile and bind none of their programs and hold no memory, on adds exactly theirs") {
+    // A renderer of its own: its shader library compiles a program on first use, so the programs
+    // it holds after a frame are the ones that frame bound.
+    test::glContext();
+    FrameRenderer fresh(vistaRoot());
+    Settings s;
+    s.terrain.size_m = 1024.0f;
+    s.terrain.height_scale_m = 120.0f;
+    test::terrainOnly(s);  // the sky and the sun cascades stay: their tessellated casters count too
+    test::adoptTerrain(fresh, s.terrain, 257, [](int x, int z) {
+        return 0.4f + 0.2f * std::sin(float(x) * 0.07f) * std::cos(float(z) * 0.05f);
+    });
+    // Eye height: near-tier quadrants inside the tessellated range and beyond it (where POM runs).
+    const ViewParams view{{0.0, fresh.terrain()->heightAt(0.0, 0.0) + 2.0, 0.0}, 0.0, -10.0, 60.0, 0.1, 96, 54};
+    auto frame = [&](const Settings& t) {
+        fresh.resetHistory();
+        return test::renderFrame(fresh, t, view);
+    };
+    // How many of the programs used so far are POM variants and tessellated programs.
+    auto relief = [&fresh] {
+        std::pair<int, int> pom_tess{0, 0};
+        for (const std::string& name : fresh.shaders().names()) {
+            INFO(name);
+            pom_tess.first += name.find("TERRAIN_POM") != std::string::npos;
+            pom_tess.second += name.find("terrain_tess.glsl") != std::string::npos;
+        }
+        return pom_tess;
+    };
+    const test::RenderedFrame off = frame(s);
+    const std::size_t programs_off = fresh.shaders().size();
+    CHECK(relief() == std::pair<int, int>{0, 0});
+    frame(s);
+    CHECK(fresh.shaders().size() == programs_off);  // nothing new on a second frame
+    CHECK(off.report.counters.count("terrain.tess_patches") == 0);
+    CHECK(off.report.counters.count("terrain.tess_shadow_patches") == 0);
+
+    Settings on = s;
+    on.terrain.pom.enabled = true;
+    on.terrain.tessellation.enabled = true;
+    test::RenderedFrame with = frame(on);
+    CHECK(with.report.counters["terrain.tess_patches"] > 0);
+    CHECK(with.report.counters["terrain.tess_shadow_patches"] > 0);
+    CHECK(with.report.counters["terrain.tier_near"] > 0);
+    // The near tier's POM variant, the tessellated G-buffer program and the tessellated shadow
+    // program: none of them was compiled (or bound) with both off.
+    CHECK(fresh.shaders().size() == programs_off + 3);
+    CHECK(relief() == std::pair<int, int>{1, 2});
+    // Neither holds memory of its own: the relief is the detail array's alpha, the patches are the
+    // grid's own vertices and instances.
+    CHECK(with.report.counters["terrain.memory_bytes"] == off.report.counters.at("terrain.memory_bytes"));
+}

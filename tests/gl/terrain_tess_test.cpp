@@ -2,7 +2,9 @@
 // (terrain/tess_displacement.h): the rendered depth of a displaced flat plane, unprojected to world
 // points, lies where tessDisplacement() puts the surface, and does not where a mirror with another
 // amplitude or fade range would; the sun cascades that serve displaced ground draw displaced
-// casters, so the displaced plane does not shadow itself (no acne against tessellation off).
+// casters, so the displaced plane does not shadow itself (no acne against tessellation off); so do
+// a spot light's atlas tile and a point light's cube faces (flat casters there leave 92-99% of
+// the lamp-lit displaced plane in shadow).
 #include "renderer_fixture.h"
 #include "renderer/camera.h"
 #include "terrain/materials.h"
@@ -202,4 +204,96 @@ TEST_CASE("gl: every sun cascade serving displaced ground casts displaced, so a 
     // Undisplaced casters above the displaced surface shade it wherever the relief sinks deeper
     // than the bias (most of it at 1 m): displaced ones do not.
     CHECK(on < off + 0.01);
+}
+
+TEST_CASE("gl: spot tiles and point faces serving displaced ground cast displaced, so a lamp-lit displaced plane has no acne") {
+    Settings s = displacedPlane();
+    s.sky.sun_mode = SunMode::Angles;
+    s.sky.sun_elevation_deg = -30.0f;  // night: no sun cascade, the lamp's shadow view alone serves the ground
+    s.shadows.enabled = true;
+    s.shadows.point_enabled = true;
+    s.lights.enabled = true;
+    usePlane(s);
+    const double ground = planeHeight(s);
+    const ViewParams view{{3.7, ground + 1.7, -5.3}, 30.0, -12.0, 60.0, 0.1, 160, 90};
+    // 20 m above the ground 14 m ahead of the eye, inside the displacement's full depth (up to half
+    // the range): a spot whose 35 degree cone keeps every lit point at least 55 degrees below the
+    // lamp (steeper than any relief slope, so the relief cannot shade itself), or a point lamp
+    // (its downward cube face) measured over the same points.
+    const double yaw = glm::radians(view.yaw_deg);
+    const glm::dvec3 lamp = view.position + glm::dvec3(14.0 * std::sin(yaw), 0.0, -14.0 * std::cos(yaw)) +
+                            glm::dvec3(0.0, ground + 20.0 - view.position.y, 0.0);
+    const glm::dmat4 inv = glm::inverse(glm::dmat4(viewMatrices(view).view_proj));
+    for (LightType type : {LightType::Spot, LightType::Point}) {
+        const bool spot = type == LightType::Spot;
+        CAPTURE(spot);
+        Light l;
+        l.type = type;
+        l.position = lamp;
+        l.direction = {0.0f, -1.0f, 0.0f};
+        l.radius_m = 60.0f;
+        l.intensity = 2000.0f;
+        l.inner_deg = 30.0f;
+        l.outer_deg = 35.0f;
+        // The lamp's own light per pixel: lit minus unlit (the night sky's), with and without its shadow.
+        auto light = [&](bool tess, bool shadow, bool on, std::vector<float>* depth, double* patches) {
+            Settings t = s;
+            t.terrain.tessellation.enabled = tess;
+            Light k = l;
+            k.shadow = shadow;
+            t.lights.lights = {{"lamp", k}};
+            if (!on) t.lights.lights.clear();
+            FrameRequest request;
+            request.depth = depth;
+            renderer().resetHistory();
+            test::RenderedFrame f = test::renderFrame(renderer(), t, view, 0.0, request);
+            if (patches) {
+                *patches = f.report.counters["terrain.tess_shadow_patches"];
+                CHECK(f.report.counters["shadows.drawn"] == 0.0);  // no sun cascade
+                CHECK(f.report.counters[spot ? "shadows.spot_shadowed" : "shadows.point_shadowed"] == 1.0);
+            }
+            return f.rgba;
+        };
+        auto shadowedShare = [&](bool tess, double& patches) {
+            std::vector<float> depth;
+            const std::vector<float> dark = light(tess, true, false, &depth, nullptr);
+            const std::vector<float> open = light(tess, false, true, nullptr, nullptr);
+            const std::vector<float> shadowed = light(tess, true, true, nullptr, &patches);
+            const auto lum = [](const std::vector<float>& c, std::size_t i) {
+                return 0.2126 * c[i * 4] + 0.7152 * c[i * 4 + 1] + 0.0722 * c[i * 4 + 2];
+            };
+            double brightest = 0.0;
+            for (std::size_t i = 0; i < depth.size(); ++i) brightest = std::max(brightest, lum(open, i) - lum(dark, i));
+            int pixels = 0, acne = 0;
+            for (int row = 0; row < view.height; ++row)
+                for (int x = 0; x < view.width; ++x) {
+                    const std::size_t i = std::size_t(row) * std::size_t(view.width) + std::size_t(x);
+                    if (depth[i] <= 0.0f) continue;
+                    const glm::dvec2 ndc(2.0 * (x + 0.5) / view.width - 1.0, 1.0 - 2.0 * (row + 0.5) / view.height);
+                    const glm::dvec4 h = inv * glm::dvec4(ndc, double(depth[i]), 1.0);
+                    const glm::dvec3 p = view.position + glm::dvec3(h) / h.w;
+                    const glm::dvec3 to_lamp = glm::normalize(lamp - p);
+                    const double lit = lum(open, i) - lum(dark, i);
+                    // Steeply below the lamp, lit by it, and inside the tessellated range.
+                    if (to_lamp.y < std::sin(glm::radians(56.0)) || lit < 0.2 * brightest ||
+                        glm::length(p - view.position) > double(s.terrain.tessellation.range_m))
+                        continue;
+                    ++pixels;
+                    acne += lum(shadowed, i) - lum(dark, i) < 0.5 * lit;
+                }
+            REQUIRE(pixels > 1000);
+            return double(acne) / double(pixels);
+        };
+        double patches_off = 0.0, patches_on = 0.0;
+        const double off = shadowedShare(false, patches_off);
+        const double on = shadowedShare(true, patches_on);
+        std::printf("tess %s shadows: shadowed share under the lamp %.4f off, %.4f on; %.0f shadow patches\n",
+                    spot ? "spot" : "point", off, on, patches_on);
+        CHECK(patches_off == 0.0);
+        CHECK(patches_on > 0.0);
+        CHECK(off < 0.01);  // a lamp-lit plane
+        // Flat casters above the displaced surface shade it wherever the relief sinks deeper than
+        // the bias: displaced ones do not.
+        CHECK(on < off + 0.01);
+    }
 }
