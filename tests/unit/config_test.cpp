@@ -213,7 +213,7 @@ TEST_CASE("config: an unknown key is reported with a suggestion") {
     // Nothing close: the message lists the section's keys instead.
     CHECK(oneError("[postfx.exposure]\nbrightness = 2\n", s, 2) ==
           "unknown key [postfx.exposure] brightness; accepted: enabled, mode, ev, min_ev, max_ev, night_ev, low_percent, high_percent, "
-          "speed_up, speed_down");
+          "speed_up, speed_down, iso");
 }
 
 TEST_CASE("config: an unknown section is reported once with a suggestion and its keys are skipped") {
