@@ -43,5 +43,6 @@ constexpr int kObjectDraws = 14;      // shader storage: the indirect draw comma
 constexpr int kObjectModels = 15;     // shader storage: per model bounding sphere, regions and triangles per LOD
 constexpr int kAerialInscatter = 6;      // texture unit: the aerial-perspective volume's in-scattering (renderer/aerial_volume.h), forward passes
 constexpr int kAerialTransmittance = 7;  // texture unit: its transmittance
+constexpr int kPassBlock = 8;  // uniform block: the executing pass's own block (renderer/shaders/pass_block.glsl, renderer/pass_kit.h)
 
 }  // namespace vista::binding

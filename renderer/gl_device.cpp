@@ -73,6 +73,21 @@ GLuint GlDevice::framebuffer(std::initializer_list<GLuint> colors, GLuint depth)
     return id;
 }
 
+void GlDevice::bindUniforms(int binding, const void* data, std::size_t bytes) {
+    constexpr std::size_t kRingBytes = std::size_t(1) << 18;
+    if (bytes > kRingBytes) throw std::logic_error("GlDevice::bindUniforms: a uniform block of " + std::to_string(bytes) + " bytes");
+    if (uniform_ring_.id() == 0) {
+        GLint alignment = 256;
+        glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+        ring_alignment_ = std::size_t(std::max(alignment, 1));
+        uniform_ring_ = gl::Buffer::create(GLsizeiptr(kRingBytes), nullptr, GL_DYNAMIC_STORAGE_BIT, "pass uniform blocks");
+    }
+    if (ring_offset_ + bytes > kRingBytes) ring_offset_ = 0;
+    glNamedBufferSubData(uniform_ring_.id(), GLintptr(ring_offset_), GLsizeiptr(bytes), data);
+    glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(binding), uniform_ring_.id(), GLintptr(ring_offset_), GLsizeiptr(bytes));
+    ring_offset_ += (bytes + ring_alignment_ - 1) / ring_alignment_ * ring_alignment_;
+}
+
 void bindTarget(GLuint fb, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
     glViewport(0, 0, width, height);

@@ -25,10 +25,18 @@ public:
     // once and reused; dropped when one of its textures is destroyed.
     GLuint framebuffer(std::initializer_list<GLuint> colors, GLuint depth = 0);
 
+    // Copies a pass's uniform block into a ring buffer and binds that range at uniform
+    // block binding `binding` (renderer/pass_kit.h: bindPassBlock). Later draws read the
+    // copy made for them: GL orders the buffer update after the draws already issued.
+    void bindUniforms(int binding, const void* data, std::size_t bytes);
+
 private:
     std::unordered_map<std::uint32_t, gl::Texture> textures_;
     std::unordered_map<std::uint32_t, gl::Buffer> buffers_;
     std::map<std::vector<GLuint>, gl::Framebuffer> framebuffers_;  // key: colors..., depth
+    gl::Buffer uniform_ring_;        // made on first use
+    std::size_t ring_offset_ = 0;    // next free byte
+    std::size_t ring_alignment_ = 256;  // GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT
 };
 
 // Binds fb, sets the viewport to width x height and the draw buffers to its colours.

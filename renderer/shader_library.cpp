@@ -211,6 +211,23 @@ GLuint ShaderLibrary::id(const fs::path& file, const std::vector<std::string>& d
     return 0;
 }
 
+void ShaderLibrary::checkBlock(GLuint program, const char* block, std::size_t bytes) {
+    if (program == 0 || !blocks_checked_.emplace(program, block).second) return;
+    const GLuint index = glGetUniformBlockIndex(program, block);
+    if (index == GL_INVALID_INDEX) return;
+    GLint size = 0;
+    glGetActiveUniformBlockiv(program, index, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    if (std::size_t(size) == bytes) return;
+    std::string name = "program " + std::to_string(program);
+    for (const auto& [key, p] : programs_)
+        if (p->id() == program) name = key;
+    const std::string message = name + ": uniform block " + block + " is " + std::to_string(size) +
+                                " bytes in GLSL (std140) and " + std::to_string(bytes) +
+                                " in C++; keep its members in whole 16-byte rows (renderer/shaders/pass_block.glsl)";
+    if (unlisted == UnlistedProgram::Fail) throw std::logic_error(message);
+    std::fprintf(stderr, "vista: %s\n", message.c_str());
+}
+
 void ShaderLibrary::setListed(const ProgramList& keys) {
     restricted_ = true;
     listed_.clear();

@@ -70,6 +70,12 @@ public:
     GLuint id(const std::filesystem::path& file, const std::vector<std::string>& defines = {});
     GLuint id(const ProgramKey& key) { return id(key.file, key.defines); }
 
+    // Checks, once per linked program, that its uniform block `block` is `bytes` long as GL
+    // lays it out: the C++ mirror of a PASS_BLOCK (renderer/shaders/pass_block.glsl) and the
+    // GLSL block then agree. A program that does not use the block passes. A mismatch throws
+    // std::logic_error under UnlistedProgram::Fail (the tests), else is printed once.
+    void checkBlock(GLuint program, const char* block, std::size_t bytes);
+
     // The variants the renderer may request. Until a list is set, any is allowed.
     void setListed(const ProgramList& keys);
     // One more allowed variant (the GL tests' probe programs, drawn with a renderer's library).
@@ -110,6 +116,7 @@ private:
     std::set<std::string> listed_;        // ProgramKey::text() of every listed variant
     std::set<std::string> unlisted_seen_;
     std::set<std::string> failures_reported_;  // id() prints each failed program once
+    std::set<std::pair<GLuint, std::string>> blocks_checked_;  // (program, block) seen by checkBlock
     int compiled_ = 0;
     std::chrono::steady_clock::time_point last_poll_{};
     // Programs whose files changed, with when the change was first seen.

@@ -3,6 +3,8 @@
 
 #include "sky/clouds/cloud_model.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 

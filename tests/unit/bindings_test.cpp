@@ -2,6 +2,7 @@
 // #defines, so it is included here as C++ and compared.
 #include "renderer/bindings.h"
 #include "renderer/shaders/bindings.glsl"
+#include "renderer/shaders/pass_block.glsl"
 
 #include <doctest/doctest.h>
 
@@ -46,4 +47,5 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kObjectModels == BINDING_OBJECT_MODELS);
     CHECK(binding::kAerialInscatter == BINDING_AERIAL_INSCATTER);
     CHECK(binding::kAerialTransmittance == BINDING_AERIAL_TRANSMITTANCE);
+    CHECK(binding::kPassBlock == BINDING_PASS_BLOCK);
 }
