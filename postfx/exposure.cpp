@@ -3,12 +3,17 @@
 // not swing it, and exponential adaptation whose rate is per second, not per frame.
 #include "postfx/exposure.h"
 
+#include "renderer/pass_kit.h"
+
 #include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace vista {
+namespace {
+#include "postfx/shaders/exposure_block.glsl"
+}  // namespace
 
 AutoExposure::AutoExposure() {
     postfx::ExposureState initial;
@@ -34,92 +39,46 @@ ExposureInput cameraExposure(const ExposureSettings& s, double ev100_value, doub
 
 ExposureInput AutoExposure::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                       const ExposureSettings& s, double dt_s, bool reset, double cd_per_unit) {
-    struct HistogramData {
-        TextureHandle image;
-        BufferHandle histogram;
+    ComputePass count("postfx.exposure.histogram", {"postfx/shaders/exposure_histogram.glsl", {}});
+    count.inputs = {image};
+    count.creates = {{postfx::kHistogramBinding, "exposure.histogram", BufferDesc{sizeof(std::uint32_t) * postfx::kHistogramBins}}};
+    count.clear_writes = true;
+    count.groups = [](const TextureDesc& desc) {
+        const unsigned g = postfx::kHistogramGroup;
+        const unsigned w = (unsigned(desc.width) + 1) / 2, h = (unsigned(desc.height) + 1) / 2;  // 2x2 blocks
+        return glm::uvec3((w + g - 1) / g, (h + g - 1) / g, 1);
     };
-    const HistogramData& h = graph.addPass<HistogramData>("postfx.exposure.histogram",
-        [&](PassBuilder& b, HistogramData& d) {
-            d.image = b.read(image);
-            d.histogram = b.write(b.create("exposure.histogram", BufferDesc{sizeof(std::uint32_t) * postfx::kHistogramBins}));
-        },
-        [&rc](const HistogramData& d, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(d.image);
-            glClearNamedBufferData(ctx.buffer(d.histogram), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-            glUseProgram(rc.shaders.id("postfx/shaders/exposure_histogram.glsl"));
-            glBindTextureUnit(0, ctx.texture(d.image));
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kHistogramBinding, ctx.buffer(d.histogram));
-            const GLuint g = postfx::kHistogramGroup;
-            const GLuint w = (GLuint(desc.width) + 1) / 2, h = (GLuint(desc.height) + 1) / 2;  // 2x2 blocks
-            glDispatchCompute((w + g - 1) / g, (h + g - 1) / g, 1);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        });
+    const BufferHandle histogram = addComputePass(graph, rc, std::move(count))[0];
 
-    struct AdaptData {
-        BufferHandle histogram, state;
-    };
+    ExposureBlock block{};
+    block.u_percent = {std::min(s.low_percent, s.high_percent) / 100.0f, s.high_percent / 100.0f};
+    block.u_ev_range = {std::min(s.min_ev, s.max_ev), s.max_ev};
+    block.u_speed = {s.speed_up, s.speed_down};
+    block.u_dt = float(std::clamp(dt_s, 0.0, 1e6));
+    block.u_reset = reset ? 1.0f : 0.0f;
+    block.u_units = glm::vec3(float(std::log2(std::max(rc.pre_exposure, 1e-30))),
+                              float(std::log2(std::max(cd_per_unit, 1e-30))), s.night_ev);
+    block.u_compensation = std::exp2(s.ev);
     // The state is written, not declared read: the previous frame's value is this pass's own
     // business, and a pass reading what it writes would keep itself alive.
-    BufferHandle state = graph.importBuffer("exposure.state", BufferDesc{sizeof(postfx::ExposureState)}, state_.id());
-    const float low = std::min(s.low_percent, s.high_percent) / 100.0f, high = s.high_percent / 100.0f;
-    const float min_ev = std::min(s.min_ev, s.max_ev), max_ev = s.max_ev;
-    const float up = s.speed_up, down = s.speed_down, compensation = std::exp2(s.ev);
-    const float dt = float(std::clamp(dt_s, 0.0, 1e6));
-    const glm::vec3 units(float(std::log2(std::max(rc.pre_exposure, 1e-30))), float(std::log2(std::max(cd_per_unit, 1e-30))),
-                          s.night_ev);
-    const AdaptData& a = graph.addPass<AdaptData>("postfx.exposure.adapt",
-        [&](PassBuilder& b, AdaptData& d) {
-            d.histogram = b.read(h.histogram);
-            d.state = b.write(state);
-        },
-        [&rc, low, high, min_ev, max_ev, up, down, compensation, dt, reset, units](const AdaptData& d, PassContext& ctx) {
-            GLuint program = rc.shaders.id("postfx/shaders/exposure_adapt.glsl");
-            glUseProgram(program);
-            glProgramUniform2f(program, 0, low, high);
-            glProgramUniform2f(program, 1, min_ev, max_ev);
-            glProgramUniform2f(program, 2, up, down);
-            glProgramUniform1f(program, 3, dt);
-            glProgramUniform1f(program, 4, reset ? 1.0f : 0.0f);
-            glProgramUniform1f(program, 5, compensation);
-            glProgramUniform3f(program, 6, units.x, units.y, units.z);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kHistogramBinding, ctx.buffer(d.histogram));
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kExposureBinding, ctx.buffer(d.state));
-            glDispatchCompute(1, 1, 1);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        });
-    return {true, 1.0f, a.state};
+    const BufferHandle state = graph.importBuffer("exposure.state", BufferDesc{sizeof(postfx::ExposureState)}, state_.id());
+    ComputePass adapt("postfx.exposure.adapt", {"postfx/shaders/exposure_adapt.glsl", {}});
+    adapt.reads = {{postfx::kHistogramBinding, histogram}};
+    adapt.writes = {{postfx::kExposureBinding, state}};
+    const BufferHandle adapted = addComputePass(graph, rc, std::move(adapt), block)[0];
+    return {true, 1.0f, adapted};
 }
 
 TextureHandle addExposureApplyPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                                    const ExposureInput& exposure) {
-    struct Data {
-        TextureHandle in, out;
-        BufferHandle state;
-    };
-    const bool automatic = exposure.state.valid();
-    const float manual = exposure.manual;
-    const Data& d = graph.addPass<Data>("postfx.exposure.apply",
-        [&](PassBuilder& b, Data& data) {
-            data.in = b.read(image);
-            if (automatic) data.state = b.read(exposure.state);
-            TextureDesc desc = b.desc(image);
-            desc.levels = 1;
-            data.out = b.write(b.create("exposed", desc));
-        },
-        [&rc, automatic, manual](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            std::vector<std::string> defines;
-            if (automatic) defines.push_back("EXPOSURE_AUTO");
-            GLuint program = rc.shaders.id("postfx/shaders/exposure_apply.glsl", defines);
-            glUseProgram(program);
-            glProgramUniform1f(program, 0, manual);
-            glBindTextureUnit(0, ctx.texture(data.in));
-            if (automatic) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kExposureBinding, ctx.buffer(data.state));
-            drawFullscreen(rc);
-        });
-    return d.out;
+    FullscreenPass pass("postfx.exposure.apply", {"postfx/shaders/exposure_apply.glsl", {}}, {image}, "exposed");
+    if (exposure.state.valid()) {
+        pass.program.defines.push_back("EXPOSURE_AUTO");
+        pass.buffers.emplace_back(postfx::kExposureBinding, exposure.state);
+    }
+    ExposureBlock block{};
+    block.u_exposure = exposure.manual;
+    return addFullscreenPass(graph, rc, std::move(pass), block);
 }
 
 ProgramList exposurePrograms() {

@@ -2,6 +2,8 @@
 // direction); the visibility and the flare itself are GPU passes.
 #include "postfx/lens_flare.h"
 
+#include "renderer/pass_kit.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -9,6 +11,9 @@
 #include <cmath>
 
 namespace vista {
+namespace {
+#include "postfx/shaders/lens_flare_block.glsl"
+}  // namespace
 
 std::optional<glm::vec2> sunScreenPosition(const ViewParams& view, const glm::dvec3& sun_dir) {
     if (!(sun_dir.y > 0.0)) return std::nullopt;  // below the horizon
@@ -46,56 +51,27 @@ TextureHandle LensFlare::addPasses(FrameGraph& graph, const RenderContext& rc, T
     // Pixels per radian at the centre of the image, for the sampling radius.
     const double px_per_rad = 0.5 * double(rc.view.height) / std::tan(0.5 * glm::radians(rc.view.fov_deg));
     const float radius_px = float(std::max(1.0, px_per_rad * std::tan(glm::radians(double(s.visibility_radius_deg)))));
-    const float dt = float(std::clamp(dt_s, 0.0, 1e6)), rate = s.visibility_rate;
-    const glm::vec2 sun_uv = *sun;
-    struct VisibilityData {
-        TextureHandle depth;
-        BufferHandle state;
-    };
+    LensFlareBlock block{};
+    block.u_sun_uv = *sun;
+    block.u_radius_px = radius_px;
+    block.u_strength = s.intensity * sun_illuminance;
+    block.u_dt = float(std::clamp(dt_s, 0.0, 1e6));
+    block.u_rate = s.visibility_rate;
+    block.u_reset = continues ? 0.0f : 1.0f;
+    block.u_starburst = s.starburst;
+    block.u_ghosts = float(s.ghosts);
+    block.u_ghost_spacing = s.ghost_spacing;
+    block.u_halo_radius = s.halo_radius;
+    block.u_chromatic = s.chromatic;
     // Written, not declared read: the last frame's visibility is this pass's own business.
-    BufferHandle state = graph.importBuffer("lens_flare.visibility", BufferDesc{sizeof(postfx::FlareVisibility)}, state_.id());
-    const BufferHandle visibility = graph.addPass<VisibilityData>("postfx.lens_flare.visibility",
-        [&](PassBuilder& b, VisibilityData& d) {
-            d.depth = b.read(depth);
-            d.state = b.write(state);
-        },
-        [&rc, sun_uv, radius_px, dt, rate, continues](const VisibilityData& d, PassContext& ctx) {
-            GLuint program = rc.shaders.id("postfx/shaders/lens_flare_visibility.glsl");
-            glUseProgram(program);
-            glProgramUniform4f(program, 0, sun_uv.x, sun_uv.y, radius_px, 0.0f);
-            glProgramUniform3f(program, 1, dt, rate, continues ? 0.0f : 1.0f);
-            glBindTextureUnit(0, ctx.texture(d.depth));
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kFlareVisibilityBinding, ctx.buffer(d.state));
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-            glDispatchCompute(1, 1, 1);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        }).state;
-
-    struct FlareData {
-        TextureHandle image, out;
-        BufferHandle visibility;
-    };
-    const glm::vec4 shape{float(s.ghosts), s.ghost_spacing, s.halo_radius, s.chromatic};
-    const glm::vec2 strength{s.intensity * sun_illuminance, s.starburst};
-    return graph.addPass<FlareData>("postfx.lens_flare",
-        [&](PassBuilder& b, FlareData& d) {
-            d.image = b.read(image);
-            d.visibility = b.read(visibility);
-            TextureDesc desc = b.desc(image);
-            desc.levels = 1;
-            d.out = b.write(b.create("lens_flare.out", desc));
-        },
-        [&rc, sun_uv, shape, strength](const FlareData& d, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(d.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(d.out)}), desc.width, desc.height);
-            GLuint program = rc.shaders.id("postfx/shaders/lens_flare.glsl");
-            glUseProgram(program);
-            glProgramUniform4f(program, 0, sun_uv.x, sun_uv.y, strength.x, strength.y);
-            glProgramUniform4f(program, 1, shape.x, shape.y, shape.z, shape.w);
-            glBindTextureUnit(0, ctx.texture(d.image));
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kFlareVisibilityBinding, ctx.buffer(d.visibility));
-            drawFullscreen(rc);
-        }).out;
+    const BufferHandle state = graph.importBuffer("lens_flare.visibility", BufferDesc{sizeof(postfx::FlareVisibility)}, state_.id());
+    ComputePass measure("postfx.lens_flare.visibility", {"postfx/shaders/lens_flare_visibility.glsl", {}});
+    measure.inputs = {depth};
+    measure.writes = {{postfx::kFlareVisibilityBinding, state}};
+    const BufferHandle visibility = addComputePass(graph, rc, std::move(measure), block)[0];
+    FullscreenPass flare("postfx.lens_flare", {"postfx/shaders/lens_flare.glsl", {}}, {image}, "lens_flare.out");
+    flare.buffers = {{postfx::kFlareVisibilityBinding, visibility}};
+    return addFullscreenPass(graph, rc, std::move(flare), block);
 }
 
 ProgramList lensFlarePrograms() {

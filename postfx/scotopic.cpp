@@ -1,6 +1,8 @@
 // The scotopic pass (postfx/scotopic.h): its CPU mirrors and its one full-screen pass.
 #include "postfx/scotopic.h"
 
+#include "renderer/pass_kit.h"
+
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -9,6 +11,8 @@
 namespace vista {
 
 namespace {
+
+#include "postfx/shaders/scotopic_block.glsl"
 
 // Linear sRGB to CIE XYZ (D65).
 void toXyz(double r, double g, double b, double& x, double& y, double& z) {
@@ -37,32 +41,14 @@ double rodShare(double luminance_cd) {
 
 TextureHandle addScotopicPass(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
                               const ScotopicSettings& s, double cd_per_value) {
-    struct Data {
-        TextureHandle in, out;
-    };
     // The blur radius at w = 1 in pixels: acuity_arcmin over the view's angle per pixel.
     const double px_per_rad = 0.5 * double(rc.view.height) / std::tan(glm::radians(rc.view.fov_deg) * 0.5);
     const float radius_px = float(glm::radians(double(s.acuity_arcmin) / 60.0) * px_per_rad);
-    const float cd = float(cd_per_value), blue = s.blue_shift;
-    const bool view = s.show_rod_share;
-    return graph.addPass<Data>("postfx.scotopic",
-        [&](PassBuilder& b, Data& data) {
-            data.in = b.read(image);
-            TextureDesc desc = b.desc(image);
-            desc.levels = 1;
-            data.out = b.write(b.create("scotopic", desc));
-        },
-        [&rc, radius_px, cd, blue, view](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            std::vector<std::string> defines;
-            if (view) defines.push_back("ROD_SHARE_VIEW");
-            GLuint program = rc.shaders.id("postfx/shaders/scotopic.glsl", defines);
-            glUseProgram(program);
-            glProgramUniform3f(program, 0, cd, radius_px, blue);
-            glBindTextureUnit(0, ctx.texture(data.in));
-            drawFullscreen(rc);
-        }).out;
+    std::vector<std::string> defines;
+    if (s.show_rod_share) defines.push_back("ROD_SHARE_VIEW");
+    return addFullscreenPass(graph, rc,
+                             FullscreenPass("postfx.scotopic", {"postfx/shaders/scotopic.glsl", defines}, {image}, "scotopic"),
+                             ScotopicBlock{float(cd_per_value), radius_px, s.blue_shift, 0.0f});
 }
 
 ProgramList scotopicPrograms() {

@@ -2,9 +2,12 @@
 #include "postfx/tonemap.h"
 
 #include "postfx/postfx_bindings.h"
+#include "renderer/pass_kit.h"
 
 namespace vista {
 namespace {
+
+#include "postfx/shaders/tonemap_block.glsl"
 
 const char* operatorDefine(Tonemapper op) {
     switch (op) {
@@ -33,33 +36,11 @@ ProgramList tonemapPrograms() {
 
 TextureHandle addTonemapPass(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, Tonemapper op, float white,
                              const ExposureInput& exposure, const char* name) {
-    struct Data {
-        TextureHandle hdr, ldr;
-        BufferHandle exposure;
-    };
     const bool automatic = exposure.state.valid();
-    const float manual = exposure.manual;
-    const Data& d = graph.addPass<Data>(name,
-        [&](PassBuilder& b, Data& data) {
-            data.hdr = b.read(hdr);
-            if (automatic) data.exposure = b.read(exposure.state);
-            TextureDesc desc = b.desc(hdr);
-            desc.format = PixelFormat::RGBA8;
-            desc.levels = 1;
-            data.ldr = b.write(b.create("ldr", desc));
-        },
-        [&rc, op, manual, white, automatic](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.ldr);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.ldr)}), desc.width, desc.height);
-            GLuint program = rc.shaders.id("postfx/shaders/tonemap.glsl", defines(op, automatic));
-            glUseProgram(program);
-            glProgramUniform1f(program, 0, manual);
-            glProgramUniform1f(program, 1, white);
-            glBindTextureUnit(0, ctx.texture(data.hdr));
-            if (automatic) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, postfx::kExposureBinding, ctx.buffer(data.exposure));
-            drawFullscreen(rc);
-        });
-    return d.ldr;
+    FullscreenPass pass(name, {"postfx/shaders/tonemap.glsl", defines(op, automatic)}, {hdr}, "ldr");
+    pass.format = PixelFormat::RGBA8;
+    if (automatic) pass.buffers.emplace_back(postfx::kExposureBinding, exposure.state);
+    return addFullscreenPass(graph, rc, std::move(pass), TonemapBlock{exposure.manual, white, 0.0f, 0.0f});
 }
 
 }  // namespace vista

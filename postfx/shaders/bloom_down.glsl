@@ -7,8 +7,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_source;
-layout(location = 0) uniform vec2 u_texel;   // 1 / source size
-layout(location = 1) uniform float u_clamp;  // highlight clamp (first level)
+#include "bloom_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 vec3 tap(vec2 uv) {

@@ -7,9 +7,9 @@
 
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
-layout(binding = BINDING_TEX_0) uniform sampler2D u_coarse;
-layout(binding = BINDING_TEX_1) uniform sampler2D u_fine;  // this level's downsample, or the image
-layout(location = 0) uniform float u_mix;
+layout(binding = BINDING_TEX_0) uniform sampler2D u_fine;  // this level's downsample, or the image
+layout(binding = BINDING_TEX_1) uniform sampler2D u_coarse;
+#include "bloom_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 void main() {

@@ -18,8 +18,7 @@ layout(std430, binding = POSTFX_BINDING_DOF_FOCUS) readonly buffer DofFocus {
     float pad;
 };
 #endif
-layout(location = 0) uniform vec4 u_lens;   // focal length (m), f-number, sensor height (m), image height (px)
-layout(location = 1) uniform vec4 u_focus;  // manual focus (diopters), near (m), max CoC (px), largest diopters
+#include "dof_block.glsl"
 layout(location = 0) out vec4 o_coc;
 
 void main() {
@@ -27,14 +26,14 @@ void main() {
     vec3 c = texelFetch(u_image, p, 0).rgb;
     c = (any(isnan(c)) || any(isinf(c))) ? vec3(0.0) : clamp(c, vec3(0.0), vec3(65504.0));
 #ifdef DOF_AUTOFOCUS
-    float focus = isnan(diopters) ? 0.0 : clamp(diopters, 0.0, u_focus.w);
+    float focus = isnan(diopters) ? 0.0 : clamp(diopters, 0.0, u_max_diopters);
 #else
-    float focus = u_focus.x;
+    float focus = u_manual_diopters;
 #endif
     float d = texelFetch(u_depth, p, 0).r;
-    float inv_distance = (d > 0.0 && !isnan(d)) ? min(d, 1.0) / u_focus.y : 0.0;  // NaN: infinitely far
-    float f = u_lens.x;
-    float radius = 0.5 * f * f / u_lens.y * (focus - inv_distance) / (1.0 - f * focus) / u_lens.z * u_lens.w;
-    o_coc = vec4(c, clamp(radius, -u_focus.z, u_focus.z));
+    float inv_distance = (d > 0.0 && !isnan(d)) ? min(d, 1.0) / u_near_m : 0.0;  // NaN: infinitely far
+    float f = u_focal_m;
+    float radius = 0.5 * f * f / u_f_stop * (focus - inv_distance) / (1.0 - f * focus) / u_sensor_m * u_height_px;
+    o_coc = vec4(c, clamp(radius, -u_max_coc_px, u_max_coc_px));
 }
 #endif

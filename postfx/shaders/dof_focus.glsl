@@ -14,13 +14,12 @@ layout(std430, binding = POSTFX_BINDING_DOF_FOCUS) buffer DofFocus {
     float valid;
     float pad;
 };
-layout(location = 0) uniform vec4 u_params;  // dt (s), rate (1/s), near (m), largest diopters (1 / (2 f))
-layout(location = 1) uniform float u_reset;  // 1: take the target at once
+#include "dof_block.glsl"
 
 float sampleDiopters(ivec2 p, ivec2 size) {
     float d = texelFetch(u_depth, clamp(p, ivec2(0), size - 1), 0).r;
     d = (d > 0.0 && !isnan(d)) ? min(d, 1.0) : 0.0;  // NaN and negative: infinitely far
-    return clamp(d / u_params.z, 0.0, u_params.w);
+    return clamp(d / u_near_m, 0.0, u_max_diopters);
 }
 
 void main() {
@@ -38,7 +37,7 @@ void main() {
         }
     float measured = v[2];
     bool first = u_reset > 0.5 || valid < 0.5 || isnan(diopters) || isinf(diopters);
-    float keep = exp(-max(u_params.x, 0.0) * u_params.y);
+    float keep = exp(-max(u_dt, 0.0) * u_rate);
     diopters = first ? measured : measured + (diopters - measured) * keep;
     target = measured;
     valid = 1.0;

@@ -1,4 +1,4 @@
-// "postfx.dof.gather": per pixel, u_params.x taps on a Vogel disk of radius R = max(own |CoC|,
+// "postfx.dof.gather": per pixel, u_taps taps on a Vogel disk of radius R = max(own |CoC|,
 // the near tiles' radius), each tap weighted by how much its own disc covers this pixel:
 // coverage = clamp(r - distance + 0.5, 0, 1), over the disc's area r^2 (a pixel's light spreads
 // over its disc).
@@ -8,7 +8,7 @@
 // - Near field (CoC < 0): r = the tap's own radius; the layer's opacity is the share of the
 //   pixel the foreground discs cover, sum(coverage * R^2 / (taps * r^2)), so a blurred
 //   foreground edge fades over the sharp background.
-// In focus (R < 0.5) the pixel is copied. Debug: red far, green near, blue in focus.
+// In focus (R < 0.5) the pixel is copied. DOF_DEBUG (a variant): red far, green near, blue in focus.
 #include "../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -16,7 +16,7 @@
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_coc;   // rgb colour (sanitised), a signed CoC (px)
 layout(binding = BINDING_TEX_1) uniform sampler2D u_near;  // dilated near radius per tile
-layout(location = 0) uniform vec4 u_params;  // taps, max CoC (px), debug
+#include "dof_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 void main() {
@@ -24,17 +24,16 @@ void main() {
     ivec2 size = textureSize(u_coc, 0);
     vec4 centre = texelFetch(u_coc, p, 0);
     float own = centre.a;
-    if (u_params.z > 0.5) {
-        float t = clamp(abs(own) / u_params.y, 0.0, 1.0);
-        o_color = abs(own) < 0.5 ? vec4(0.0, 0.0, 1.0, 1.0) : own > 0.0 ? vec4(t, 0.0, 0.0, 1.0) : vec4(0.0, t, 0.0, 1.0);
-        return;
-    }
+#ifdef DOF_DEBUG
+    float t = clamp(abs(own) / u_max_coc_px, 0.0, 1.0);
+    o_color = abs(own) < 0.5 ? vec4(0.0, 0.0, 1.0, 1.0) : own > 0.0 ? vec4(t, 0.0, 0.0, 1.0) : vec4(0.0, t, 0.0, 1.0);
+#else
     float radius = max(abs(own), texelFetch(u_near, p / DOF_TILE, 0).r);
     if (radius < 0.5) {
         o_color = vec4(centre.rgb, 1.0);
         return;
     }
-    int taps = int(u_params.x);
+    int taps = int(u_taps);
     vec3 far_sum = vec3(0.0), near_sum = vec3(0.0);
     float far_w = 0.0, near_w = 0.0, cover = 0.0;
     if (own >= 0.0) {
@@ -69,5 +68,6 @@ void main() {
     float alpha = far_w > 0.0 ? (near_w > 0.0 ? clamp(cover, 0.0, 1.0) : 0.0) : 1.0;
     vec3 c = near_w > 0.0 || far_w > 0.0 ? mix(far, near, alpha) : centre.rgb;
     o_color = vec4(c, 1.0);
+#endif
 }
 #endif

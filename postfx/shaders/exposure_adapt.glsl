@@ -13,17 +13,7 @@ layout(std430, binding = POSTFX_BINDING_EXPOSURE) buffer ExposureState {
     float target_log2;
     float valid;
 };
-layout(location = 0) uniform vec2 u_percent;   // low, high fractions of the counted pixels
-layout(location = 1) uniform vec2 u_ev_range;  // min_ev, max_ev
-layout(location = 2) uniform vec2 u_speed;     // towards brighter, towards darker (1/s)
-layout(location = 3) uniform float u_dt;       // s since the last frame
-layout(location = 4) uniform float u_reset;    // 1: take the target at once
-layout(location = 5) uniform float u_compensation;  // 2^ev
-// The image holds radiance times the frame's pre-exposure (sky/night_light.h): metering and
-// adaptation happen on the physical value (HDR units of [sky] sun_illuminance), so a change of
-// pre-exposure between frames moves nothing. x log2 pre-exposure, y log2 cd/m^2 per HDR unit,
-// z night_ev.
-layout(location = 6) uniform vec3 u_units;
+#include "exposure_block.glsl"
 
 void main() {
     float total = 0.0;

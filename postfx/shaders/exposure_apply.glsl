@@ -6,7 +6,7 @@
 #include "../../renderer/shaders/bindings.glsl"
 #include "exposure.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
-layout(location = 0) uniform float u_exposure;
+#include "exposure_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 void main() {

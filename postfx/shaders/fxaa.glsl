@@ -8,7 +8,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
-layout(location = 0) uniform vec3 u_params;  // edge_threshold, edge_threshold_min, subpixel
+#include "fxaa_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 float luma(vec3 c) {
@@ -36,7 +36,7 @@ void main() {
     float e = lumaNear(p, ivec2(1, 0)), w = lumaNear(p, ivec2(-1, 0));
     float lo = min(m, min(min(n, s), min(e, w))), hi = max(m, max(max(n, s), max(e, w)));
     float range = hi - lo;
-    if (range < max(u_params.y, hi * u_params.x)) {
+    if (range < max(u_edge_threshold_min, hi * u_edge_threshold)) {
         o_color = centre;
         return;
     }
@@ -48,7 +48,7 @@ void main() {
 
     float average = (2.0 * (n + s + e + w) + nw + ne + sw + se) / 12.0;
     float sub = smoothstep(0.0, 1.0, clamp(abs(average - m) / range, 0.0, 1.0));
-    sub = sub * sub * u_params.z;
+    sub = sub * sub * u_subpixel;
 
     float l1 = horizontal ? s : w, l2 = horizontal ? n : e;
     float g1 = abs(l1 - m), g2 = abs(l2 - m);

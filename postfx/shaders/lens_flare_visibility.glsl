@@ -13,24 +13,23 @@ layout(std430, binding = POSTFX_BINDING_FLARE_VISIBILITY) buffer FlareVisibility
     float valid;
     float pad;
 };
-layout(location = 0) uniform vec4 u_sun;     // sun uv, sampling radius (px)
-layout(location = 1) uniform vec3 u_params;  // dt (s), rate (1/s), reset
+#include "lens_flare_block.glsl"
 
 void main() {
     ivec2 size = textureSize(u_depth, 0);
-    vec2 centre = u_sun.xy * vec2(size);
+    vec2 centre = u_sun_uv * vec2(size);
     float sky = 0.0, counted = 0.0;
     for (int i = 0; i < 16; ++i) {
         vec2 offset = (vec2(float(i % 4), float(i / 4)) - 1.5) / 1.5;
-        ivec2 p = ivec2(floor(centre + offset * u_sun.z));
+        ivec2 p = ivec2(floor(centre + offset * u_radius_px));
         if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) continue;
         float d = texelFetch(u_depth, p, 0).r;
         counted += 1.0;
         sky += d == 0.0 ? 1.0 : 0.0;
     }
     float measured = counted > 0.0 ? sky / counted : 0.0;
-    bool first = u_params.z > 0.5 || valid < 0.5 || isnan(visibility);
-    visibility = first ? measured : measured + (visibility - measured) * exp(-max(u_params.x, 0.0) * u_params.y);
+    bool first = u_reset > 0.5 || valid < 0.5 || isnan(visibility);
+    visibility = first ? measured : measured + (visibility - measured) * exp(-max(u_dt, 0.0) * u_rate);
     target = measured;
     valid = 1.0;
 }

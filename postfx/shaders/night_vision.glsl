@@ -8,8 +8,7 @@
 #include "../../renderer/shaders/bindings.glsl"
 #include "hash_noise.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
-layout(location = 0) uniform vec4 u_params;  // gain, noise, vignette, pattern index
-layout(location = 1) uniform vec3 u_tint;
+#include "night_vision_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 
@@ -18,11 +17,11 @@ void main() {
     vec2 size = vec2(textureSize(u_image, 0));
     vec4 src = texelFetch(u_image, p, 0);
     vec3 c = (any(isnan(src.rgb)) || any(isinf(src.rgb))) ? vec3(0.0) : max(src.rgb, vec3(0.0));
-    float l = dot(c, vec3(0.2126, 0.7152, 0.0722)) * u_params.x;
-    l += u_params.y * (hashNoise(uvec3(uvec2(p), uint(u_params.w))) - 0.5);
+    float l = dot(c, vec3(0.2126, 0.7152, 0.0722)) * u_gain;
+    l += u_noise * (hashNoise(uvec3(uvec2(p), uint(u_noise_index))) - 0.5);
     // The scope: a circle of the image height, soft over its outer 15 %.
     float r = length((gl_FragCoord.xy - 0.5 * size) / (0.5 * size.y));
-    l *= 1.0 - u_params.z * smoothstep(0.85, 1.0, r);
+    l *= 1.0 - u_scope_vignette * smoothstep(0.85, 1.0, r);
     o_color = vec4(clamp(l * u_tint, 0.0, 1.0), src.a);
 }
 #endif

@@ -6,7 +6,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
-layout(location = 0) uniform vec3 u_params;  // cd/m^2 per image unit, blur radius (px) at w = 1, blue shift
+#include "scotopic_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 // Krawczyk et al. 2005's tint of the rods' image (luminance ~1).
@@ -34,12 +34,12 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 src = texelFetch(u_image, p, 0);
     vec3 c = fetch(p);
-    float w = rodShare(dot(c, vec3(0.2126, 0.7152, 0.0722)) * u_params.x);
+    float w = rodShare(dot(c, vec3(0.2126, 0.7152, 0.0722)) * u_cd_per_value);
 #ifdef ROD_SHARE_VIEW
     o_color = vec4(vec3(w), src.a);
 #else
     // The rods' luminance over a disk: the centre and two rings of six (radii r/2 and r).
-    float r = w * u_params.y;
+    float r = w * u_blur_px;
     float v = scotopic(c);
     if (r >= 0.5) {
         float sum = v, weight = 1.0;
@@ -52,7 +52,7 @@ void main() {
         }
         v = sum / weight;
     }
-    vec3 rods = v * mix(vec3(1.0), kRodTint, u_params.z);
+    vec3 rods = v * mix(vec3(1.0), kRodTint, u_blue_shift);
     o_color = vec4(mix(c, rods, w), src.a);
 #endif
 }

@@ -5,8 +5,7 @@
 #include "../../renderer/shaders/bindings.glsl"
 #include "exposure.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_hdr;
-layout(location = 0) uniform float u_exposure;  // manual linear scale, 2^ev (1 without exposure)
-layout(location = 1) uniform float u_white;     // Reinhard: value mapped to 1
+#include "tonemap_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 // Narkowicz 2015 fit of the ACES RRT+ODT (input scaled so 0.18 stays mid-grey-ish).
