@@ -139,7 +139,7 @@ void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
 }
 
 RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s,
-                                     glm::dvec2 jitter_px) {
+                                     glm::dvec2 jitter_px, std::uint32_t screen_noise_frame) {
     RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
     if (jitter_px != glm::dvec2(0.0)) {
         applyJitter(rc.matrices, jitter_px, view.width, view.height);
@@ -165,7 +165,7 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     const glm::dvec3 key = sky_lighting_.get(settings.sky, view.position).keyDirection();
     u.sun_dir = glm::vec4(glm::vec3(key), rc.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
-    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), 0.0f);
+    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), float(screen_noise_frame % 65536));
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(float(pre_exposure_), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
@@ -481,7 +481,7 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
     return Frame{s,
                  view,
                  time_s,
-                 context(view, s, time_s, jitter),
+                 context(view, s, time_s, jitter, taa || request.animate_screen_noise ? std::uint32_t(sequence_index_) : 0u),
                  cut,
                  previous_view,
                  taa,
