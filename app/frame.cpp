@@ -751,9 +751,14 @@ void FrameRenderer::addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTarg
 void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
                                       FrameReport& report) {
     // The frame's motion vectors from the camera's motion since the previous frame (none on a cut).
+    // Motion blur scales the same vectors by its shutter (the graph culls them when it adds no pass).
+    const bool motion_blur = f.s.postfx.enabled && f.s.motion_blur.enabled &&
+                             std::find(f.s.postfx.order.begin(), f.s.postfx.order.end(), PostEffect::MotionBlur) !=
+                                 f.s.postfx.order.end();
     TextureHandle velocity;
-    if ((f.taa || request.velocity) && scene.depth.valid())
+    if ((f.taa || request.velocity || motion_blur) && scene.depth.valid())
         velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
+    scene.velocity = velocity;
     if (request.velocity && velocity.valid())
         addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);
     if (f.taa) {
@@ -777,7 +782,7 @@ TextureHandle FrameRenderer::addPostAndDebugPasses(FrameGraph& graph, const Fram
                                                    const Shadows& shadows, const FrameRequest& request) {
     const Settings& s = f.s;
     const bool shown = request.capture_ldr || request.present;  // else the graph culls the chain
-    const TextureHandle display = postfx_.addPasses(graph, f.rc, scene.hdr, s, scene.depth, shown);
+    const TextureHandle display = postfx_.addPasses(graph, f.rc, scene.hdr, s, scene.depth, shown, scene.velocity);
     switch (s.debug.view) {
         case DebugView::Final:
         case DebugView::Cascades:  // the final image, tinted by lighting.sun
