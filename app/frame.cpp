@@ -407,6 +407,7 @@ struct FrameRenderer::Frame {
     RenderContext rc;
     bool cut;                   // a camera cut (or a new run): every history is rejected
     ViewParams previous_view;   // the motion vectors' previous camera (the view itself on a cut)
+    double motion_dt_s;         // time since the previous frame for per-vertex motion (0 on a cut)
     bool taa;                   // [postfx.taa] this frame
     bool terrain;               // [terrain] on and loaded: everything opaque stands on it
     bool shadow_view;           // [debug] view = shadow: lighting.sun's output, nothing on top
@@ -460,6 +461,7 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
     const bool cut = !has_last_view_ || time_s < last_time_s_ ||
                      cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
     const ViewParams previous_view = cut ? view : last_view_;
+    const double motion_dt_s = cut ? 0.0 : time_s - last_time_s_;
     if (cut && sun_shadows_) sun_shadows_->forgetKept();  // a kept cascade is history too
     last_view_ = view;
     last_time_s_ = time_s;
@@ -484,6 +486,7 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
                  context(view, s, time_s, jitter, taa || request.animate_screen_noise ? std::uint32_t(sequence_index_) : 0u),
                  cut,
                  previous_view,
+                 motion_dt_s,
                  taa,
                  s.terrain.enabled && bool(terrain_),
                  s.debug.view == DebugView::Shadow,
@@ -662,7 +665,7 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
         const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
         const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
         water_.use().prepare(s.water, f.view, f.time_s, {f.light.sun_irradiance, f.light.sky_up, f.light.ground_up},
-                             sky_.get(), ground, ripples);
+                             sky_.get(), ground, ripples, f.motion_dt_s);
     } else if (!s.water.enabled) {
         water_.release();  // a disabled feature keeps nothing allocated
     }
@@ -758,6 +761,10 @@ void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTa
     TextureHandle velocity;
     if ((f.taa || request.velocity || motion_blur) && scene.depth.valid())
         velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
+    // The sea's waves move on their own: their motion replaces the camera's where the sea is seen.
+    if (velocity.valid() && f.s.water.enabled && !f.shadow_view && water_.get() && !f.cut)
+        velocity = water_->addVelocityPass(graph, f.rc, scene.depth, velocity,
+                                           previousClipFromRelative(f.previous_view, f.view));
     scene.velocity = velocity;
     if (request.velocity && velocity.valid())
         addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);
