@@ -139,7 +139,7 @@ void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
 }
 
 RenderContext FrameRenderer::context(const ViewParams& view, const Settings& settings, double time_s,
-                                     glm::dvec2 jitter_px) {
+                                     glm::dvec2 jitter_px, std::uint32_t screen_noise_frame) {
     RenderContext rc{shaders_, device_, empty_vao_.id(), view, viewMatrices(view), frame_, time_s};
     if (jitter_px != glm::dvec2(0.0)) {
         applyJitter(rc.matrices, jitter_px, view.width, view.height);
@@ -165,7 +165,7 @@ RenderContext FrameRenderer::context(const ViewParams& view, const Settings& set
     const glm::dvec3 key = sky_lighting_.get(settings.sky, view.position).keyDirection();
     u.sun_dir = glm::vec4(glm::vec3(key), rc.sun_illuminance);
     u.viewport = glm::vec4(float(view.width), float(view.height), 1.0f / float(view.width), 1.0f / float(view.height));
-    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), 0.0f);
+    u.time = glm::vec4(float(time_s), float(frame_), float(sequence_index_ % 65536), float(screen_noise_frame % 65536));
     u.near = glm::vec4(float(view.near_m), 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(float(pre_exposure_), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof u, &u);
@@ -407,6 +407,7 @@ struct FrameRenderer::Frame {
     RenderContext rc;
     bool cut;                   // a camera cut (or a new run): every history is rejected
     ViewParams previous_view;   // the motion vectors' previous camera (the view itself on a cut)
+    double motion_dt_s;         // time since the previous frame for per-vertex motion (0 on a cut)
     bool taa;                   // [postfx.taa] this frame
     bool terrain;               // [terrain] on and loaded: everything opaque stands on it
     bool shadow_view;           // [debug] view = shadow: lighting.sun's output, nothing on top
@@ -460,6 +461,7 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
     const bool cut = !has_last_view_ || time_s < last_time_s_ ||
                      cameraCut(last_view_, view, s.taa.cut_distance_m, s.taa.cut_angle_deg);
     const ViewParams previous_view = cut ? view : last_view_;
+    const double motion_dt_s = cut ? 0.0 : time_s - last_time_s_;
     if (cut && sun_shadows_) sun_shadows_->forgetKept();  // a kept cascade is history too
     last_view_ = view;
     last_time_s_ = time_s;
@@ -481,9 +483,10 @@ FrameRenderer::Frame FrameRenderer::beginFrame(const Settings& s, const ViewPara
     return Frame{s,
                  view,
                  time_s,
-                 context(view, s, time_s, jitter),
+                 context(view, s, time_s, jitter, taa || request.animate_screen_noise ? std::uint32_t(sequence_index_) : 0u),
                  cut,
                  previous_view,
+                 motion_dt_s,
                  taa,
                  s.terrain.enabled && bool(terrain_),
                  s.debug.view == DebugView::Shadow,
@@ -662,7 +665,7 @@ void FrameRenderer::addSkyAndTransparentPasses(FrameGraph& graph, const Frame& f
         const double ground = f.terrain ? terrain_->heightAt(f.view.position.x, f.view.position.z) : std::nan("");
         const float ripples = s.weather.enabled && s.weather.kind == WeatherKind::Rain ? s.weather.intensity : 0.0f;
         water_.use().prepare(s.water, f.view, f.time_s, {f.light.sun_irradiance, f.light.sky_up, f.light.ground_up},
-                             sky_.get(), ground, ripples);
+                             sky_.get(), ground, ripples, f.motion_dt_s);
     } else if (!s.water.enabled) {
         water_.release();  // a disabled feature keeps nothing allocated
     }
@@ -751,9 +754,18 @@ void FrameRenderer::addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTarg
 void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
                                       FrameReport& report) {
     // The frame's motion vectors from the camera's motion since the previous frame (none on a cut).
+    // Motion blur scales the same vectors by its shutter (the graph culls them when it adds no pass).
+    const bool motion_blur = f.s.postfx.enabled && f.s.motion_blur.enabled &&
+                             std::find(f.s.postfx.order.begin(), f.s.postfx.order.end(), PostEffect::MotionBlur) !=
+                                 f.s.postfx.order.end();
     TextureHandle velocity;
-    if ((f.taa || request.velocity) && scene.depth.valid())
+    if ((f.taa || request.velocity || motion_blur) && scene.depth.valid())
         velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
+    // The sea's waves move on their own: their motion replaces the camera's where the sea is seen.
+    if (velocity.valid() && f.s.water.enabled && !f.shadow_view && water_.get() && !f.cut)
+        velocity = water_->addVelocityPass(graph, f.rc, scene.depth, velocity,
+                                           previousClipFromRelative(f.previous_view, f.view));
+    scene.velocity = velocity;
     if (request.velocity && velocity.valid())
         addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);
     if (f.taa) {
@@ -777,7 +789,7 @@ TextureHandle FrameRenderer::addPostAndDebugPasses(FrameGraph& graph, const Fram
                                                    const Shadows& shadows, const FrameRequest& request) {
     const Settings& s = f.s;
     const bool shown = request.capture_ldr || request.present;  // else the graph culls the chain
-    const TextureHandle display = postfx_.addPasses(graph, f.rc, scene.hdr, s, scene.depth, shown);
+    const TextureHandle display = postfx_.addPasses(graph, f.rc, scene.hdr, s, scene.depth, shown, scene.velocity);
     switch (s.debug.view) {
         case DebugView::Final:
         case DebugView::Cascades:  // the final image, tinted by lighting.sun

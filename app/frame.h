@@ -69,6 +69,10 @@ struct FrameRequest {
     // frame is the same whichever run renders it (docs/farm.md). Unset: frames since the last
     // resetHistory().
     std::optional<std::int64_t> sequence_frame;
+    // The screen estimators' blue noise (SSAO, shadow kernels: u_time.w) follows the sequence
+    // index even without TAA (a caller that averages frames itself: the converged reference);
+    // otherwise it moves only while TAA averages it and stays still without (no flicker).
+    bool animate_screen_noise = false;
 };
 
 struct FrameReport {
@@ -134,7 +138,10 @@ public:
     // the frame's own buffers. Per feature in the frame's "FEATURE.memory_bytes" counters.
     std::size_t gpuMemoryBytes() const;
     // jitter_px: the TAA's sub-pixel shift of the projection this frame (none by default).
-    RenderContext context(const ViewParams& view, const Settings& settings, double time_s, glm::dvec2 jitter_px = {});
+    // screen_noise_frame: the blue-noise frame of the screen estimators (SSAO, shadow kernels;
+    // u_time.w): the sequence index while TAA averages them, else 0 (a still pattern, no flicker).
+    RenderContext context(const ViewParams& view, const Settings& settings, double time_s, glm::dvec2 jitter_px = {},
+                          std::uint32_t screen_noise_frame = 0);
     // GPU ms of one full-screen RGBA16F copy at this size (the stats' cost unit).
     double measureReferenceCopy(int width, int height);
     std::uint64_t frameIndex() const { return frame_; }

@@ -35,6 +35,7 @@ std::vector<unsigned char> renderConvergedReference(FrameRenderer& renderer, Set
     std::vector<unsigned char> ldr;
     FrameRequest request;
     request.capture_ldr = &ldr;
+    request.animate_screen_noise = true;  // SSAO and the shadow kernels average over the frames too
     for (int i = 0; i < o.converge_frames; ++i) {
         renderer.resetHistory();
         request.sequence_frame = i;  // a different blue-noise offset every frame

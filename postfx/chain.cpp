@@ -22,7 +22,7 @@ void PostChain::resetHistory() {
 }
 
 TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
-                                   TextureHandle depth, bool shown) {
+                                   TextureHandle depth, bool shown, TextureHandle velocity) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
     const bool reset = !has_time_ || dt < 0.0;
     if (shown) {
@@ -80,7 +80,7 @@ TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, T
             case PostEffect::MotionBlur:
                 if (!s.motion_blur.enabled || !depth.valid()) break;
                 flush();
-                image = motion_blur_.use().addPasses(graph, rc, image, depth, s.motion_blur, dt, reset);
+                image = motion_blur_.use().addPasses(graph, rc, image, depth, velocity, s.motion_blur, dt, reset);
                 break;
             case PostEffect::LensFlare:
                 if (!s.lens_flare.enabled || !depth.valid()) break;

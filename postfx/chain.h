@@ -32,8 +32,10 @@ public:
     // without one those effects add no pass. shown: something reads the returned image this
     // frame; when nothing does (an HDR-only capture) the graph culls the chain, and its clock
     // stays put so the adapting states (exposure, focus) catch up on the next shown frame.
+    // velocity: the frame's motion vectors ("temporal.velocity") for motion blur; invalid: motion
+    // blur makes its own from its previous camera.
     TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
-                            TextureHandle depth = {}, bool shown = true);
+                            TextureHandle depth = {}, bool shown = true, TextureHandle velocity = {});
     // Auto exposure's state, while auto exposure is in use (null otherwise).
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
     // Depth of field's autofocus state, while depth of field is in use (null otherwise).

@@ -2,6 +2,8 @@
 // reprojection in double; the GPU does the rest in four full-screen passes.
 #include "postfx/motion_blur.h"
 
+#include "renderer/velocity.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -29,36 +31,40 @@ bool sameView(const ViewParams& a, const ViewParams& b) {
 }  // namespace
 
 TextureHandle MotionBlur::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image,
-                                    TextureHandle depth, const MotionBlurSettings& s, double dt_s, bool reset) {
+                                    TextureHandle depth, TextureHandle motion, const MotionBlurSettings& s, double dt_s,
+                                    bool reset) {
     const bool usable = has_previous_ && !reset && dt_s > 0.0 && s.shutter_deg > 0.0f && !sameView(previous_, rc.view);
     const ViewParams previous = previous_;
     previous_ = rc.view;
     has_previous_ = true;
     if (!usable) return image;
 
-    const glm::mat4 reproject(reprojectionMatrix(previous, rc.view));
+    // The frame's shared motion vectors, or the same pass from this effect's own previous camera
+    // when the caller has none (the chain on its own, as in tests).
+    if (!motion.valid()) motion = addVelocityPass(graph, rc, depth, previous);
     const double exposure_s = double(s.shutter_deg) / 360.0 / double(s.frame_rate);
     const float scale = float(exposure_s / dt_s);
     const int tile = std::max(1, int(std::ceil(s.max_blur_px * 0.5f)));
     const float near_m = float(rc.view.near_m);
 
     struct VelocityData {
-        TextureHandle depth, velocity;
+        TextureHandle depth, motion, velocity;
     };
     const TextureHandle velocity = graph.addPass<VelocityData>("postfx.motion_blur.velocity",
         [&](PassBuilder& b, VelocityData& d) {
             d.depth = b.read(depth);
+            d.motion = b.read(motion);
             const TextureDesc& desc = b.desc(image);
             d.velocity = b.write(b.create("motion_blur.velocity", {desc.width, desc.height, PixelFormat::RGBA16F}));
         },
-        [&rc, reproject, scale, tile, near_m](const VelocityData& d, PassContext& ctx) {
+        [&rc, scale, tile, near_m](const VelocityData& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}), desc.width, desc.height);
             GLuint program = rc.shaders.id("postfx/shaders/motion_blur_velocity.glsl");
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
             glProgramUniform4f(program, 1, scale, float(tile), near_m, 0.0f);
             glBindTextureUnit(0, ctx.texture(d.depth));
+            glBindTextureUnit(1, ctx.texture(d.motion));
             drawFullscreen(rc);
         }).velocity;
 

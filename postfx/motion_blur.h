@@ -1,6 +1,7 @@
 // Camera motion blur after McGuire, Hennessy, Bukowski and Osman 2012 ("A reconstruction filter
-// for plausible motion blur"): "postfx.motion_blur.velocity" reprojects each pixel's depth into
-// the previous frame (half the blur vector in pixels and the view distance),
+// for plausible motion blur"): "postfx.motion_blur.velocity" scales the frame's shared motion
+// vectors ("temporal.velocity", renderer/velocity.h) by the shutter (half the blur vector in
+// pixels and the view distance),
 // "postfx.motion_blur.tiles" keeps the longest vector of each k x k tile (k = max_blur_px / 2),
 // "postfx.motion_blur.neighbors" the longest of the 3x3 tiles around, and
 // "postfx.motion_blur.gather" samples along that dominant vector, weighting each tap by whether
@@ -31,9 +32,10 @@ glm::dmat4 reprojectionMatrix(const ViewParams& previous, const ViewParams& curr
 class MotionBlur {
 public:
     // Blurs image by the camera's motion since the last call (dt_s earlier; reset: there is no
-    // usable previous frame). Returns image itself when there is nothing to blur.
+    // usable previous frame). Returns image itself when there is nothing to blur. motion: the
+    // frame's "temporal.velocity" target; invalid: this effect adds one from its own previous camera.
     TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle image, TextureHandle depth,
-                            const MotionBlurSettings& s, double dt_s, bool reset);
+                            TextureHandle motion, const MotionBlurSettings& s, double dt_s, bool reset);
 
 private:
     ViewParams previous_;

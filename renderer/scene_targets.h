@@ -25,6 +25,7 @@ struct SceneTargets {
     TextureHandle light_heat;  // R32F local lights evaluated per pixel; only for [debug] view = lights
     TextureHandle ao;          // ambient occlusion in r, [0, 1] (1 = open); invalid: none (lighting.sun multiplies its ambient by it)
     TextureHandle cloud_shadow;  // R16F sun transmittance through the clouds (sky/clouds/clouds.h); invalid: none
+    TextureHandle velocity;      // RGBA32F motion vectors ("temporal.velocity", renderer/velocity.h); invalid: none this frame
 };
 
 }  // namespace vista

@@ -1,13 +1,14 @@
-// "postfx.motion_blur.velocity": each pixel's depth reprojected into the previous frame
-// (u_reproject, built in double on the CPU). Writes rg = half the blur vector in pixels
-// (displacement * exposure / frame time / 2, clamped to the tile size k), b = view distance.
-// The sky (depth 0) is a point at infinity: it moves with the camera's rotation only.
+// "postfx.motion_blur.velocity": the blur vectors from the frame's shared motion vectors
+// ("temporal.velocity", renderer/velocity.h: this pixel's UV minus its UV in the previous frame,
+// the camera's motion reprojected in double on the CPU). Writes rg = half the blur vector in
+// pixels (displacement * exposure / frame time / 2, clamped to the tile size k), b = view
+// distance. A point behind the previous camera (velocity a = 0) blurs as far as allowed.
 #include "../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
-layout(location = 0) uniform mat4 u_reproject;
+layout(binding = BINDING_TEX_1) uniform sampler2D u_motion;  // temporal.velocity
 layout(location = 1) uniform vec4 u_params;  // exposure / frame time, k (px), near (m)
 layout(location = 0) out vec4 o_velocity;
 
@@ -16,11 +17,10 @@ void main() {
     vec2 size = vec2(textureSize(u_depth, 0));
     float d = texelFetch(u_depth, p, 0).r;
     d = (d > 0.0 && !isnan(d)) ? min(d, 1.0) : 0.0;
-    vec2 ndc = gl_FragCoord.xy / size * 2.0 - 1.0;
-    vec4 prev = u_reproject * vec4(ndc, d, 1.0);
+    vec4 motion = texelFetch(u_motion, p, 0);
     vec2 half_v = vec2(0.0);
-    if (prev.w > 1e-6) {
-        half_v = (ndc - prev.xy / prev.w) * 0.5 * size * (0.5 * u_params.x);
+    if (motion.a > 0.5) {
+        half_v = motion.xy * size * (0.5 * u_params.x);
     } else {
         half_v = vec2(u_params.y, 0.0);  // behind the previous camera: as long as allowed
     }

@@ -1,5 +1,5 @@
 // "postfx.ssao": horizon-based ambient occlusion (HBAO style) from depth and G-buffer normals.
-// Per pixel, u_counts.x directions (rotated by interleaved gradient noise) are marched in screen
+// Per pixel, u_counts.x directions (rotated by spatiotemporal blue noise) are marched in screen
 // space over the projection of radius_m; along each the highest horizon above the tangent plane
 // (sine of its elevation, less the bias, faded by distance) is the occlusion from that side.
 // Writes r = ambient visibility (1 = open), g = view distance along the axis (for the blur);
@@ -9,6 +9,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/common.glsl"
 #include "../../renderer/shaders/gbuffer.glsl"
+#include "../../renderer/shaders/blue_noise.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_normal;
 layout(location = 0) uniform vec4 u_params;   // radius_m, intensity, bias, full-size pixels per texel (1 or 2)
@@ -34,7 +35,8 @@ void main() {
         o_ao = vec4(1.0, z, 0.0, 1.0);
         return;
     }
-    float noise = fract(52.9829189 * fract(dot(vec2(p), vec2(0.06711056, 0.00583715))));
+    // Spatiotemporal blue noise per SSAO texel (channel 1), moving each frame while TAA averages it.
+    float noise = blueNoise(ivec2(gl_FragCoord.xy), uint(u_time.w), 1);
     float step_px = radius_px / float(u_counts.y);
     float occlusion = 0.0;
     for (int d = 0; d < u_counts.x; ++d) {

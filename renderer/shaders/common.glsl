@@ -12,7 +12,8 @@ layout(std140, binding = BINDING_FRAME_UNIFORMS) uniform FrameUniforms {
     vec4 u_camera_world;   // camera position in world space (lossy float; for effects only)
     vec4 u_sun_dir;        // xyz: unit vector towards the key light (sun, or moon at night), w: sun illuminance
     vec4 u_viewport;       // width, height, 1/width, 1/height
-    vec4 u_time;           // x: scene time (s), y: frame index, z: temporal index (since the last history reset)
+    vec4 u_time;           // x: scene time (s), y: frame index, z: temporal index (since the last history reset),
+                           // w: the screen estimators' blue-noise frame (SSAO, shadow kernels): z with TAA, else 0
     vec4 u_near;           // x: near plane (m)
     vec4 u_exposure;       // x: pre-exposure (sky/night_light.h), already in every light's radiance
 };

@@ -10,6 +10,7 @@
 #include "sky/weather/weather_model.h"
 #include "terrain/water/shaders/water_bindings.glsl"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
@@ -75,7 +76,7 @@ void Water::countDrawn(int segments) {
 }
 
 void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
-                    const SkyAtmosphere* sky, double ground_m, float rain_ripples) {
+                    const SkyAtmosphere* sky, double ground_m, float rain_ripples, double motion_dt_s) {
     if (!have_waves_ || !sameWaves(s, waves_for_)) {
         waves_ = makeWaves(s);
         waves_for_ = s;
@@ -101,7 +102,7 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
 
     Uniforms u{};
     std::vector<glm::vec4> a, b;
-    packWaves(waves_, eye, time_s, a, b);
+    packWaves(waves_, eye, time_s, a, b, motion_dt_s);
     for (std::size_t i = 0; i < a.size() && i < std::size_t(WATER_MAX_WAVES); ++i) {
         u.wave_a[i] = a[i];
         u.wave_b[i] = b[i];
@@ -123,6 +124,26 @@ void Water::prepare(const WaterSettings& s, const ViewParams& view, double time_
     u.rain = glm::vec4(ripple.xz.x, ripple.xz.y, ripple.time, std::clamp(rain_ripples, 0.0f, 1.0f));
     if (!uniforms_) uniforms_ = gl::Buffer::create(sizeof(Uniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "water uniforms");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+}
+
+std::function<void()> Water::visibleDraw(const RenderContext& rc) {
+    // The segments that can be in view (from the matrix the vertex stage uses, jitter included),
+    // each drawn from the eye out to this frame's last ring: one range per segment.
+    const SectorRange sectors =
+        sector_cull_ ? visibleSectors(grid_, height_above_m_, waves_.max_height, waves_.max_chop,
+                                      frustumFromViewProj(glm::dmat4(rc.matrices.view_proj)))
+                     : SectorRange{0, grid_.segments};
+    countDrawn(sectors.count);
+    std::vector<GLsizei> counts(std::size_t(sectors.count), GLsizei(6 * grid_.rings));
+    std::vector<const void*> offsets;
+    for (int k = 0; k < sectors.count; ++k) {
+        const std::size_t segment = std::size_t((sectors.first + k) % grid_.segments);
+        offsets.push_back(reinterpret_cast<const void*>(segment * std::size_t(built_rings_) * 6 * sizeof(std::uint32_t)));
+    }
+    return [counts = std::move(counts), offsets = std::move(offsets)] {
+        if (!counts.empty())
+            glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
+    };
 }
 
 void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
@@ -159,23 +180,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         if (lights) variant.lights = lights->stats().method;
         variant.sun_shadow = shadows.valid();
     }
-    // The segments that can be in view (from the matrix the vertex stage uses, jitter included),
-    // each drawn from the eye out to this frame's last ring: one range per segment.
-    const SectorRange sectors =
-        sector_cull_ ? visibleSectors(grid_, height_above_m_, waves_.max_height, waves_.max_chop,
-                                      frustumFromViewProj(glm::dmat4(rc.matrices.view_proj)))
-                     : SectorRange{0, grid_.segments};
-    countDrawn(sectors.count);
-    std::vector<GLsizei> counts(std::size_t(sectors.count), GLsizei(6 * grid_.rings));
-    std::vector<const void*> offsets;
-    for (int k = 0; k < sectors.count; ++k) {
-        const std::size_t segment = std::size_t((sectors.first + k) % grid_.segments);
-        offsets.push_back(reinterpret_cast<const void*>(segment * std::size_t(built_rings_) * 6 * sizeof(std::uint32_t)));
-    }
-    auto draw = [counts = std::move(counts), offsets = std::move(offsets)] {
-        if (!counts.empty())
-            glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
-    };
+    auto draw = visibleDraw(rc);
     const SurfaceData& d = graph.addPass<SurfaceData>("water.surface",
         [&](PassBuilder& b, SurfaceData& data) {
             data.color = b.read(c.color);
@@ -228,6 +233,41 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
         });
     targets.hdr = d.hdr;
     targets.depth = d.depth;
+}
+
+TextureHandle Water::addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, TextureHandle velocity,
+                                     const glm::dmat4& prev_clip_from_relative) {
+    struct Data {
+        TextureHandle depth, velocity;
+    };
+    const glm::mat4 prev_clip(prev_clip_from_relative);
+    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    auto draw = visibleDraw(rc);
+    return graph.addPass<Data>("water.velocity",
+        [&](PassBuilder& b, Data& d) {
+            d.depth = b.read(depth);
+            d.velocity = b.write(velocity);
+        },
+        [this, &rc, prev_clip, jitter, draw](const Data& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.velocity);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}, ctx.texture(d.depth)), desc.width, desc.height);
+            const GLuint program = rc.shaders.id(WaterSurfaceVariant{WaterView::Shaded, std::nullopt, false, false, true}.key());
+            glUseProgram(program);
+            glProgramUniformMatrix4fv(program, 1, 1, GL_FALSE, glm::value_ptr(prev_clip));
+            glProgramUniform4fv(program, 5, 1, glm::value_ptr(jitter));
+            glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
+            // Only where the surface is what the pixel shows (gl_Position is invariant).
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_EQUAL);
+            glDepthMask(GL_FALSE);
+            glDisable(GL_CULL_FACE);
+            glBindVertexArray(vao_.id());
+            draw();
+            glBindVertexArray(rc.empty_vao);
+            glDepthMask(GL_TRUE);
+            glDepthFunc(GL_GREATER);
+            glDisable(GL_DEPTH_TEST);
+        }).velocity;
 }
 
 void Water::addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets) {

@@ -21,9 +21,11 @@
 #include "renderer/shadows/sun_shadows.h"
 #include "terrain/water/waves.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -44,10 +46,13 @@ struct WaterSurfaceVariant {
     std::optional<LightCulling> lights;  // LIGHTS_*: the local lights, by their culling method
     bool sun_shadow = false;             // HAS_SUN_SHADOW: the sun through its cascades
     bool light_chunk = false;            // WATER_LIGHT_CHUNK: one further chunk of local lights alone
+    bool velocity = false;               // WATER_VELOCITY: the surface's own motion into temporal.velocity
 
     // The rules between the fields: a debug view replaces the colour, so it takes neither lights
     // nor shadows; a further chunk adds local light only, so it needs lights and no sun.
+    // The motion-vector pass shades nothing: none of the others.
     bool valid() const {
+        if (velocity) return view == WaterView::Shaded && !lights && !sun_shadow && !light_chunk;
         if (view != WaterView::Shaded) return !lights && !sun_shadow && !light_chunk;
         return !light_chunk || (lights && !sun_shadow);
     }
@@ -58,6 +63,7 @@ struct WaterSurfaceVariant {
         if (lights) d.push_back(lightMethodDefine(*lights));
         if (sun_shadow) d.push_back("HAS_SUN_SHADOW");
         if (light_chunk) d.push_back("WATER_LIGHT_CHUNK");
+        if (velocity) d.push_back("WATER_VELOCITY");
         return d;
     }
     ProgramKey key() const { return {kFile, defines()}; }
@@ -71,6 +77,7 @@ struct WaterSurfaceVariant {
                 for (bool shadow : {false, true})
                     for (bool chunk : {false, true})
                         if (WaterSurfaceVariant v{view, lights, shadow, chunk}; v.valid()) out.push_back(v);
+        out.push_back(WaterSurfaceVariant{WaterView::Shaded, std::nullopt, false, false, true});
         return out;
     }
 };
@@ -108,8 +115,9 @@ public:
     // ground_m: the terrain's height at the eye's x, z (NaN: no terrain); an eye on ground above
     // the waves' reach is never under water.
     // rain_ripples: intensity (0..1) of the rain's rings on the surface (sky/weather/shaders/rain_ripples.glsl), 0: none.
+    // motion_dt_s: the time since the previous frame (0: none, a cut), for addVelocityPass.
     void prepare(const WaterSettings& s, const ViewParams& view, double time_s, const WaterLight& light,
-                 const SkyAtmosphere* sky, double ground_m, float rain_ripples = 0.0f);
+                 const SkyAtmosphere* sky, double ground_m, float rain_ripples = 0.0f, double motion_dt_s = 0.0);
     // water.copy and water.surface over targets (hdr and depth). sky: this frame's atmosphere
     // after addLutPasses (null: no sky); lights: the local lights whose passes ran this frame
     // (null: none) — their lists must cover forward depths (LightPassOptions::forward); past
@@ -117,6 +125,13 @@ public:
     // shadows: this frame's sun cascades (invalid: none).
     void addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, const SkyAtmosphere* sky,
                           const LocalLights* lights, const SunShadowInput& shadows);
+    // "water.velocity": the surface's own motion written over the frame's motion vectors
+    // (renderer/velocity.h) where the surface is what the pixel shows (depth EQUAL to the
+    // surface's): each vertex also at its previous-frame displacement (waves.glsl
+    // previousDisplacement, the phases motion_dt_s earlier), projected by prev_clip_from_relative
+    // (renderer/temporal.h previousClipFromRelative). Returns the new velocity handle.
+    TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, TextureHandle velocity,
+                                  const glm::dmat4& prev_clip_from_relative);
     // water.underwater over targets.hdr when stats().near_surface (after the sky).
     void addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets);
 
@@ -131,6 +146,8 @@ private:
     void buildGrid(int segments, int rings);
     // Updates stats_ for the segments drawn this frame.
     void countDrawn(int segments);
+    // The draw of the segments that can be in view this frame (the one range per segment).
+    std::function<void()> visibleDraw(const RenderContext& rc);
 
     WaterSettings waves_for_{};
     bool have_waves_ = false;

@@ -105,7 +105,8 @@ WaveSample evaluateWaves(const WaveSet& set, glm::dvec2 x0, double t, double foo
     return out;
 }
 
-void packWaves(const WaveSet& set, glm::dvec2 origin, double t, std::vector<glm::vec4>& a, std::vector<glm::vec4>& b) {
+void packWaves(const WaveSet& set, glm::dvec2 origin, double t, std::vector<glm::vec4>& a, std::vector<glm::vec4>& b,
+               double dt_s) {
     a.clear();
     b.clear();
     const std::size_t n = set.waves.size();
@@ -122,7 +123,7 @@ void packWaves(const WaveSet& set, glm::dvec2 origin, double t, std::vector<glm:
         double theta0 = std::fmod(space - time + w.phase, kTwoPi);
         if (theta0 < 0.0) theta0 += kTwoPi;
         a.emplace_back(float(w.direction.x), float(w.direction.y), float(w.wavenumber), float(w.amplitude));
-        b.emplace_back(float(w.chop), float(theta0), float(tail[i]), 0.0f);
+        b.emplace_back(float(w.chop), float(theta0), float(tail[i]), float(std::fmod(w.angular_frequency * dt_s, kTwoPi)));
     }
 }
 

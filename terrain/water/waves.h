@@ -77,8 +77,11 @@ struct WaveSample {
 WaveSample evaluateWaves(const WaveSet& set, glm::dvec2 x0, double t, double footprint_m = 0.0);
 
 // What the GPU gets per wave: (d.x, d.z, k, a) and (c, theta_0, slope variance of this wave and
-// all shorter ones, 0) where theta_0 = (k d . origin - omega t + phi) mod 2 pi in double, so that
-// the shader's phase k d . (x0 - origin) + theta_0 stays exact for any time and origin (camera).
-void packWaves(const WaveSet& set, glm::dvec2 origin, double t, std::vector<glm::vec4>& a, std::vector<glm::vec4>& b);
+// all shorter ones, omega dt mod 2 pi) where theta_0 = (k d . origin - omega t + phi) mod 2 pi in
+// double, so that the shader's phase k d . (x0 - origin) + theta_0 stays exact for any time and
+// origin (camera); adding omega dt gives the phase dt_s earlier (the previous frame's surface, for
+// the motion vectors; dt_s 0: none).
+void packWaves(const WaveSet& set, glm::dvec2 origin, double t, std::vector<glm::vec4>& a, std::vector<glm::vec4>& b,
+               double dt_s = 0.0);
 
 }  // namespace vista

@@ -208,24 +208,24 @@ TEST_CASE("gl: water waves on the GPU equal the CPU's double-precision mirror (a
             points.emplace_back(float(d * std::cos(a)), float(d * std::sin(a)), footprint, 0.0f);
         }
         gl::Buffer in = gl::Buffer::create(GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0, "probe points");
-        gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 2 * sizeof(glm::vec4)), nullptr, 0, "probe results");
+        gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 3 * sizeof(glm::vec4)), nullptr, 0, "probe results");
         glUseProgram(program->id());
         glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, r.water()->uniformBuffer());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, in.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, out.id());
         glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<glm::vec4> results(points.size() * 2);
+        std::vector<glm::vec4> results(points.size() * 3);
         glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)), results.data());
         double worst_d = 0.0, worst_n = 0.0, worst_j = 0.0, worst_v = 0.0;
         for (std::size_t i = 0; i < points.size(); ++i) {
             const glm::dvec2 x0 = glm::dvec2(eye.x, eye.z) + glm::dvec2(points[i].x, points[i].y);
             const WaveSample cpu = evaluateWaves(waves, x0, t, points[i].z);
-            const glm::dvec3 d(results[2 * i]), n(results[2 * i + 1]);
+            const glm::dvec3 d(results[3 * i]), n(results[3 * i + 1]);
             worst_d = std::max(worst_d, glm::length(d - cpu.displacement));
             worst_n = std::max(worst_n, glm::length(n - cpu.normal));
-            worst_j = std::max(worst_j, std::abs(double(results[2 * i].w) - cpu.jacobian));
-            worst_v = std::max(worst_v, std::abs(double(results[2 * i + 1].w) - cpu.lost_slope_variance));
+            worst_j = std::max(worst_j, std::abs(double(results[3 * i].w) - cpu.jacobian));
+            worst_v = std::max(worst_v, std::abs(double(results[3 * i + 1].w) - cpu.lost_slope_variance));
         }
         MESSAGE("GPU vs CPU waves: displacement " << worst_d << " m, normal " << worst_n << ", jacobian " << worst_j
                                                   << ", lost slope variance " << worst_v);
@@ -293,4 +293,111 @@ TEST_CASE("gl: rain rings the sea near the eye (rain ripples), snow and dry weat
     };
     CHECK(difference(rain, dry) > 1e-3 * dry.mean.y);
     CHECK(difference(snow, dry) < 1e-6 + 1e-4 * dry.mean.y);
+}
+
+// Per-vertex motion (docs/temporal.md): "water.velocity" writes the waves' own motion into the
+// frame's motion vectors. The previous frame's displacement on the GPU equals the CPU's waves at
+// t - dt at known points (also 10,000 km out at 10^7 s), and with a still camera the sea's motion
+// vectors match the CPU: each pixel's surface point (from its depth) traced back to its rest point
+// and moved to its previous-frame position. Without the pass the camera's vectors are 0 there.
+TEST_CASE("gl: the sea writes its waves' own motion into the motion vectors, as the CPU waves say") {
+    test::TempDir dir("water-velocity");
+    Settings s = islandScene(writeIsland(dir));
+    s.taa.enabled = false;  // no jitter: pixel centres are the unjittered positions
+    s.water.choppiness = 1.0f;
+    s.water.wind_speed_m_s = 12.0f;  // higher, faster waves
+    FrameRenderer& r = renderer();
+    REQUIRE(r.prepare(s).empty());
+    r.shaders().addListed({"tests/gl/shaders/water_probe.glsl", {}});
+    auto* program = r.shaders().get("tests/gl/shaders/water_probe.glsl");
+    REQUIRE(program);
+    const double dt = 0.25;  // a slow frame rate: the waves move about a pixel
+    for (auto [eye, t] : {std::pair{glm::dvec3(-300.0, 6.0, 300.0), 3.0}, std::pair{glm::dvec3(1e7, 6.0, -1e7), 1e7}}) {
+        CAPTURE(eye.x);
+        const ViewParams view{eye, 225.0, -25.0, 60.0, 0.2, 96, 54};  // away from the island, down at the sea
+        r.resetHistory();
+        r.render(s, view, t - dt, FrameRequest{});
+        std::vector<float> velocity, depth;
+        FrameRequest request;
+        request.velocity = &velocity;
+        request.depth = &depth;
+        const FrameReport report = r.render(s, view, t, request);
+        CHECK(std::find(report.executed.begin(), report.executed.end(), "water.velocity") != report.executed.end());
+        REQUIRE(r.water());
+        const WaveSet& waves = r.water()->waves();
+
+        // The probe: previousDisplacement against the CPU at t - dt.
+        std::vector<glm::vec4> points;
+        for (int i = 0; i < 128; ++i) {
+            const double a = 0.37 * i, d = 0.5 + 3.0 * i;
+            points.emplace_back(float(d * std::cos(a)), float(d * std::sin(a)), i % 3 == 0 ? 0.0f : 0.02f * float(i % 7), 0.0f);
+        }
+        gl::Buffer in = gl::Buffer::create(GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0, "probe points");
+        gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 3 * sizeof(glm::vec4)), nullptr, 0, "probe results");
+        glUseProgram(program->id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, r.water()->uniformBuffer());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, in.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, out.id());
+        glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::vector<glm::vec4> results(points.size() * 3);
+        glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)), results.data());
+        double worst_prev = 0.0, largest_step = 0.0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const glm::dvec2 x0 = glm::dvec2(eye.x, eye.z) + glm::dvec2(points[i].x, points[i].y);
+            const glm::dvec3 prev = evaluateWaves(waves, x0, t - dt, points[i].z).displacement;
+            const glm::dvec3 now = evaluateWaves(waves, x0, t, points[i].z).displacement;
+            worst_prev = std::max(worst_prev, glm::length(glm::dvec3(results[3 * i + 2]) - prev));
+            largest_step = std::max(largest_step, glm::length(now - prev));
+        }
+        MESSAGE("previous displacement, GPU vs CPU at t - dt: " << worst_prev << " m (largest move in dt " << largest_step << " m)");
+        CHECK(worst_prev < 1e-4);
+        CHECK(largest_step > 0.01);  // the waves did move
+
+        // The motion vectors over the sea against the CPU, pixel by pixel.
+        const int w = view.width, h = view.height;
+        REQUIRE(velocity.size() == std::size_t(w * h * 4));
+        REQUIRE(depth.size() == std::size_t(w * h));
+        const ViewMatrices m = viewMatrices(view);
+        const glm::dmat4 inv(m.inv_view_proj), vp(m.view_proj);
+        const WaterGrid grid = waterGrid(s.water, eye.y - double(s.water.level_m));
+        std::vector<double> errors;
+        double motion = 0.0;
+        for (int row = 0; row < h; ++row)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = std::size_t(row * w + x);
+                const double d = depth[i];
+                if (!(d > 0.0)) continue;
+                const glm::dvec2 ndc((x + 0.5) / w * 2.0 - 1.0, 1.0 - (row + 0.5) / h * 2.0);
+                const glm::dvec4 q = inv * glm::dvec4(ndc, d, 1.0);
+                const glm::dvec3 p = glm::dvec3(q) / q.w;  // camera-relative surface point
+                if (std::abs(p.y + eye.y - double(s.water.level_m)) > waves.max_height + 0.01) continue;  // not the sea
+                // Its rest point: x0 = P.xz - D.xz(x0), by fixed-point iteration (chop < 1/k).
+                const glm::dvec2 world(eye.x + p.x, eye.z + p.z);
+                glm::dvec2 x0 = world;
+                double footprint = 0.0;
+                for (int k = 0; k < 30; ++k) {
+                    footprint = (glm::length(x0 - glm::dvec2(eye.x, eye.z)) + grid.ring_constant) * grid.angle;
+                    const glm::dvec3 dd = evaluateWaves(waves, x0, t, footprint).displacement;
+                    x0 = world - glm::dvec2(dd.x, dd.z);
+                }
+                const glm::dvec3 prev_d = evaluateWaves(waves, x0, t - dt, footprint).displacement;
+                const glm::dvec3 prev_p(x0.x - eye.x + prev_d.x, double(s.water.level_m) - eye.y + prev_d.y, x0.y - eye.z + prev_d.z);
+                const glm::dvec4 c = vp * glm::dvec4(prev_p, 1.0);
+                const glm::dvec2 expect = (ndc - glm::dvec2(c) / c.w) * 0.5;  // UV now minus UV before
+                const glm::dvec2 got(velocity[i * 4], velocity[i * 4 + 1]);
+                const glm::dvec2 px(w, h);
+                errors.push_back(glm::length((got - expect) * px));
+                motion += glm::length(expect * px);
+            }
+        REQUIRE(errors.size() > std::size_t(w * h / 4));
+        motion /= double(errors.size());
+        std::sort(errors.begin(), errors.end());
+        const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
+        MESSAGE("sea pixels " << errors.size() << ": mean wave motion " << motion << " px, error median " << median
+                              << " px, p90 " << p90 << " px");
+        CHECK(motion > 0.3);          // the still camera sees the waves move
+        CHECK(median < 0.1 * motion);  // the camera's vectors alone (0 here) would be off by all of it
+        CHECK(p90 < 0.3 * motion);
+    }
 }

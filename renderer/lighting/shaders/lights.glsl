@@ -141,11 +141,11 @@ vec3 shadeLocalLight(LocalLight light, Surface s, vec3 position, vec3 v, out boo
     if (ndotl <= 0.0) return vec3(0.0);
 #ifdef HAS_SPOT_SHADOWS
     int slot = int(light.shadow.x);
-    if (slot >= 0) attenuation *= spotShadow(slot, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy) * 6.28318531);
+    if (slot >= 0) attenuation *= spotShadow(slot, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy, 3) * 6.28318531);
 #endif
 #ifdef HAS_POINT_SHADOWS
     int cube = int(light.shadow.y);
-    if (cube >= 0) attenuation *= pointShadow(cube, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy) * 6.28318531);
+    if (cube >= 0) attenuation *= pointShadow(cube, position, s.normal, l, ndotl, shadowNoise(gl_FragCoord.xy, 3) * 6.28318531);
 #endif
     return evalBrdf(s.albedo, s.roughness, s.f0, s.normal, l, v) * light.color_scale.rgb * (attenuation * ndotl);
 }

@@ -66,7 +66,7 @@ int shadowCascade(float view_depth) {
 float sunShadow(vec3 pos, vec3 n, float ndotl, float view_depth, vec2 pixel) {
     int c = shadowCascade(view_depth);
     if (c < 0) return 1.0;
-    float angle = shadowNoise(pixel) * 6.28318531;
+    float angle = shadowNoise(pixel, 2) * 6.28318531;
     float near = u_cascade_range[c].x, far = u_cascade_range[c].y;
     float band_start = far - u_shadow_params.y * (far - near);
     float v = cascadeVisibility(c, pos, n, ndotl, angle);

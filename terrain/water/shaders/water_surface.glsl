@@ -16,6 +16,11 @@
 // colour as the lights reach through the foam ((1 - foam) x light: the shaded surface mixes the
 // foam over its lit colour); u_light_chunk says which (the shaded surface draws the first).
 // gl_Position is invariant so the chunks' depths equal the surface's.
+// WATER_VELOCITY ("water.velocity", with none of the others): the surface's own motion into the
+// frame's motion vectors (renderer/velocity.h): each vertex also at its previous-frame
+// displacement (waves.glsl previousDisplacement) through u_prev_clip (the previous camera's clip
+// from this camera's relative space); rg = this pixel's unjittered UV minus that UV, b its previous
+// depth, a = 1; drawn with depth test EQUAL, so only where the surface is seen.
 // Both stages: included once per file (the shader library expands each file once).
 #include "../../../renderer/shaders/common.glsl"
 #include "waves.glsl"
@@ -24,6 +29,10 @@
 invariant gl_Position;
 out vec3 v_position;  // camera-relative, displaced
 out vec2 v_rest;      // camera-relative rest position (x, z)
+#ifdef WATER_VELOCITY
+layout(location = 1) uniform mat4 u_prev_clip;  // previous clip from this camera's relative space
+out vec4 v_prev_clip;
+#endif
 void main() {
     int segments = int(w_grid.z);
     int ring = gl_VertexID / segments, segment = gl_VertexID - ring * segments;
@@ -36,10 +45,27 @@ void main() {
     v_position = p;
     v_rest = rest;
     gl_Position = u_view_proj * vec4(p, 1.0);
+#ifdef WATER_VELOCITY
+    v_prev_clip = u_prev_clip * vec4(vec3(rest.x, w_surface.x, rest.y) + previousDisplacement(rest, cell), 1.0);
+#endif
 }
 #endif
 
-#ifdef FRAGMENT_SHADER
+#if defined(FRAGMENT_SHADER) && defined(WATER_VELOCITY)
+layout(location = 5) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
+in vec4 v_prev_clip;
+layout(location = 0) out vec4 o_velocity;
+void main() {
+    vec2 ndc = gl_FragCoord.xy * u_viewport.zw * 2.0 - 1.0 - u_jitter.xy;
+    o_velocity = vec4(0.0);
+    if (v_prev_clip.w > 1e-6) {
+        vec2 v = (ndc - v_prev_clip.xy / v_prev_clip.w) * 0.5;
+        if (!any(isnan(v)) && !any(isinf(v))) o_velocity = vec4(v, v_prev_clip.z / v_prev_clip.w, 1.0);
+    }
+}
+#endif
+
+#if defined(FRAGMENT_SHADER) && !defined(WATER_VELOCITY)
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "../../../renderer/lighting/shaders/brdf.glsl"
 // Shared by lights.glsl and shadows.glsl below; included first and unconditionally because each

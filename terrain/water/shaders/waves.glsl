@@ -6,7 +6,7 @@
 
 layout(std140, binding = WATER_BINDING_UNIFORMS) uniform WaterUniforms {
     vec4 w_wave_a[WATER_MAX_WAVES];  // direction x, z; wavenumber k (1/m); amplitude (m)
-    vec4 w_wave_b[WATER_MAX_WAVES];  // chop (m); phase offset (rad); slope variance of this and every shorter wave; 0
+    vec4 w_wave_b[WATER_MAX_WAVES];  // chop (m); phase offset (rad); slope variance of this and every shorter wave; omega dt (rad: back to the previous frame)
     vec4 w_grid;        // x ring constant c (m), y angle per segment (rad), z segments, w waves
     vec4 w_surface;     // x still level minus camera y (m), y roughness, z refraction strength, w foam depth (m)
     vec4 w_scatter;     // rgb single-scattering albedo, w whitecaps
@@ -59,4 +59,20 @@ WaveSample evaluateWaves(vec2 p, float footprint) {
     ws.normal = normalize(cross(tz, tx));
     ws.jacobian = tx.x * tz.z - tx.z * tz.x;
     return ws;
+}
+
+// The displacement of rest point p (camera-relative x, z) in the previous frame (the phases moved
+// back by omega dt, w_wave_b[i].w): the same waves, footprint weights and sums as evaluateWaves.
+vec3 previousDisplacement(vec2 p, float footprint) {
+    vec3 d = vec3(0.0);
+    int n = int(w_grid.w);
+    for (int i = 0; i < n; ++i) {
+        vec4 a = w_wave_a[i], b = w_wave_b[i];
+        float w = waveFootprintWeight(a.z, footprint);
+        if (w <= 0.0) break;
+        float theta = a.z * dot(a.xy, p) + b.y + b.w;
+        float sn = sin(theta), cs = cos(theta);
+        d += vec3(-b.x * w * a.x * sn, a.w * w * cs, -b.x * w * a.y * sn);
+    }
+    return d;
 }

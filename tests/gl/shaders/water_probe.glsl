@@ -1,6 +1,6 @@
 // Test probe for the GPU waves (tests/gl/water_test.cpp): evaluates terrain/water/shaders/waves.glsl at
 // camera-relative rest points with the frame's water uniforms, for comparison with the CPU's
-// double-precision evaluateWaves().
+// double-precision evaluateWaves(); also the previous frame's displacement (the motion vectors').
 #ifdef COMPUTE_SHADER
 #include "../../../renderer/shaders/bindings.glsl"
 #include "../../../terrain/water/shaders/waves.glsl"
@@ -12,7 +12,8 @@ void main() {
     if (i >= uint(u_points.length())) return;
     vec4 p = u_points[i];
     WaveSample ws = evaluateWaves(p.xy, p.z);
-    u_results[2u * i] = vec4(ws.displacement, ws.jacobian);
-    u_results[2u * i + 1u] = vec4(ws.normal, ws.lost_slope_variance);
+    u_results[3u * i] = vec4(ws.displacement, ws.jacobian);
+    u_results[3u * i + 1u] = vec4(ws.normal, ws.lost_slope_variance);
+    u_results[3u * i + 2u] = vec4(previousDisplacement(p.xy, p.z), 0.0);
 }
 #endif
