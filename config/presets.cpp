@@ -109,12 +109,15 @@ const QualityKnob kKnobs[] = {
     {"terrain.detail_distance_m", "m", {100, 150, 250, 400, 100000}, terrainOn},
     {"terrain.far_material_m", "m", {1500, 2000, 3000, 6000, 1.0e7}, terrainOn},
     // Material filtering and relief up close (docs/terrain-detail.md): anisotropic filtering
-    // of the material textures; parallax occlusion mapping's linear steps from ultra up (0: off,
-    // no program variant); tessellation's largest edge factor, set by hand or in a sweep.
+    // of the material textures; parallax occlusion mapping's linear steps and tessellation's
+    // largest edge factor from ultra up (0: off, no program variant), and the tessellated range
+    // (it counts only where the factor is on). Ultra's factor 8: the eye-height meadow at
+    // 640x360 costs 1.08x of off (16: 1.38x; docs/terrain-detail.md). The reference: 128 steps,
+    // the largest factor (32, where llvmpipe's tessellator still works) over twice the range.
     {"terrain.material_anisotropy", "x", {1, 1, 1, 8, 16}, terrainOn},
     {"terrain.pom.max_steps", "steps", {0, 0, 0, 24, 128}, terrainOn, setPomSteps, pomSteps, "off"},
-    // Off in every preset: on llvmpipe a factor of 16 costs ~13 s a frame even at 48x27 (64: ~60 s).
-    {"terrain.tessellation.max_factor", "", {0, 0, 0, 0, 0}, terrainOn, setTessFactor, tessFactor, "off"},
+    {"terrain.tessellation.max_factor", "", {0, 0, 0, 8, 32}, terrainOn, setTessFactor, tessFactor, "off"},
+    {"terrain.tessellation.range_m", "m", {40, 40, 40, 40, 80}, terrainOn},
     // Sun shadows (bench shadows: error halves from 1024 to 4096 texels at 2-3x the cost).
     {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096}, shadowsOn},
     {"shadows.pcf_taps", "taps", {4, 8, 12, 16, 64}, shadowFilterOn},

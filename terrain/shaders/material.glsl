@@ -4,6 +4,23 @@
 // with TERRAIN_SPLAT a splat map's weights.
 // bands = (sand_top, grass_top, snow_start, band_blend), in heightmap units.
 
+// Bilinear filtering of an array texture's finest level, repeating (power-of-two sizes), through
+// texelFetch: what textureLod(t, vec3(uv, layer), 0.0) returns, without the sampler's state. The
+// stages without derivatives (tessellation evaluation, compute) fetch the material arrays this
+// way: with anisotropic filtering on the arrays ([terrain] material_anisotropy > 1) llvmpipe runs
+// its anisotropic footprint loop even for an explicit level, and without derivatives the
+// footprint covers the texture: one tessellated frame at 48x27 took minutes of CPU at 16x, 2 s
+// at 1x (docs/terrain-detail.md). The CPU mirrors (tess_displacement.h reliefAt) filter the same way.
+vec4 texelBilinearRepeat(sampler2DArray t, vec2 uv, int layer) {
+    ivec2 size = textureSize(t, 0).xy;
+    vec2 p = uv * vec2(size) - 0.5;
+    vec2 i = floor(p), f = p - i;
+    ivec2 a = ivec2(i) & (size - 1), b = (a + 1) & (size - 1);
+    vec4 top = mix(texelFetch(t, ivec3(a.x, a.y, layer), 0), texelFetch(t, ivec3(b.x, a.y, layer), 0), f.x);
+    vec4 bottom = mix(texelFetch(t, ivec3(a.x, b.y, layer), 0), texelFetch(t, ivec3(b.x, b.y, layer), 0), f.x);
+    return mix(top, bottom, f.y);
+}
+
 // 001's height bands: L = sum of clamp((h - start_i) / blend, 0, 1) over the three band
 // starts; layer floor(L) (sand, grass, rock, snow) blends into the next by fract(L).
 float materialBands(float h, vec4 bands) {

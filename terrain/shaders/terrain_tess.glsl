@@ -102,7 +102,7 @@ float tessDisplacement(vec3 p) {
     float fade = tessFade(length(p));
     if (fade <= 0.0) return 0.0;
     vec2 uv = (p.xz + u_tess_relief.zw) * u_tess_relief.y;
-    float h = textureLod(u_relief, vec3(uv, u_tess_fade.z), 0.0).a;
+    float h = texelBilinearRepeat(u_relief, uv, int(u_tess_fade.z + 0.5)).a;  // not the anisotropic sampler (material.glsl)
     return (h - 1.0) * u_tess_relief.x * fade;
 }
 

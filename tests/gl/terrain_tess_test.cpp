@@ -297,3 +297,42 @@ TEST_CASE("gl: spot tiles and point faces serving displaced ground cast displace
         CHECK(on < off + 0.01);
     }
 }
+
+TEST_CASE("gl: the displacement ignores the material arrays' anisotropic filtering") {
+    // The evaluation stage has no derivatives: through the arrays' sampler, 16x anisotropy made
+    // llvmpipe run its footprint loop over much of the texture per vertex (minutes a frame, and a
+    // relief averaged flat). It filters the finest level itself (material.glsl texelBilinearRepeat),
+    // so the displaced depth is the same bits at 1x and 16x.
+    Settings s = displacedPlane();
+    s.sky.enabled = false;
+    s.shadows.enabled = false;
+    s.terrain.view = TerrainView::Normals;
+    s.terrain.tessellation.range_m = 12.0f;  // few patches: the slow path stays seconds when this fails
+    s.terrain.tessellation.max_factor = 4.0f;
+    usePlane(s);
+    const double ground = planeHeight(s);
+    const ViewParams view{{3.7, ground + 3.0, -5.3}, 30.0, -60.0, 50.0, 0.1, 48, 27};
+    auto depthAt = [&](int anisotropy, double& patches) {
+        Settings t = s;
+        t.terrain.material_anisotropy = anisotropy;
+        std::vector<float> depth;
+        FrameRequest request;
+        request.depth = &depth;
+        renderer().resetHistory();
+        test::RenderedFrame f = test::renderFrame(renderer(), t, view, 0.0, request);
+        patches = f.report.counters["terrain.tess_patches"];
+        return depth;
+    };
+    double patches_1 = 0.0, patches_16 = 0.0;
+    const std::vector<float> one = depthAt(1, patches_1), sixteen = depthAt(16, patches_16);
+    REQUIRE(one.size() == sixteen.size());
+    int differ = 0, terrain = 0;
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        terrain += one[i] > 0.0f;
+        differ += one[i] != sixteen[i];
+    }
+    std::printf("tess anisotropy: %.0f patches, %d of %d terrain pixels differ between 1x and 16x\n", patches_16, differ, terrain);
+    CHECK(patches_1 > 0.0);
+    CHECK(terrain > int(one.size()) / 2);
+    CHECK(differ == 0);
+}

@@ -110,7 +110,7 @@ bool cull(uint id, out GrassBlade blade, out uint list) {
     splatWeightsAt(u_splat, u_splat_layers, u_tile_layer.zw, texel, splat_a, splat_b);
     float weight = splatShare(splat_a, splat_b, u_splat_layers, GRASS);
 #else
-    float noise = textureLod(u_albedo, vec3((rel_xz + u_tex_offset) * u_material.z, float(ROCK)), 0.0).g;
+    float noise = texelBilinearRepeat(u_albedo, (rel_xz + u_tex_offset) * u_material.z, ROCK).g;
     float bands = materialBands(s + bandJitter(noise, u_material.x), u_bands);
     float rock = rockWeight(n.y, u_material.y);
     float weight = grassWeight(bands, rock, dirtWeight(n.y, u_material.y, rock, bands));
