@@ -348,10 +348,12 @@ bool FrameRenderer::prepareLocalLights(const RenderContext& rc, const Settings& 
     GroundHeight terrain;
     if (terrain_) terrain = [t = terrain_.get()](double x, double z) { return t->heightAt(x, z); };
     const GroundHeight ground = lightGround(terrain, s.water);  // the sea's surface where it covers the terrain
-    const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground, float(pre_exposure_));
+    const bool any = local_lights_->prepare(s.lights, rc.view, rc.matrices, rc.time_s, ground,
+                                            luxPerHdrUnit(s.sky.sun_illuminance), float(pre_exposure_));
     const LocalLightStats& st = local_lights_->stats();
     report.counters["lights.count"] = double(st.count);
     report.counters["lights.visible"] = double(st.visible);
+    report.counters["lights.max_radius_m"] = st.max_radius_m;  // auto radii resolved (candela, cutoff_lux)
     report.counters["lights.skipped"] = double(st.skipped);  // below [lights] min_screen_px
     report.counters["lights.build_ms"] = st.build_ms;
     report.counters["lights.chunks"] = double(st.chunks);  // draws per pass that shades them (local_lights.h kLightChunk)

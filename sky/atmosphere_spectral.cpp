@@ -5,9 +5,10 @@
 //   table of the 1931 observer (also ISO/CIE 11664-1), the 10 nm rows.
 // - Extraterrestrial solar spectral irradiance: ASTM G-173-03 "Reference Solar Spectral
 //   Irradiance", extraterrestrial (ETR) column, averaged over each 10 nm bin [lambda,
-//   lambda + 10) (NREL RReDC). Its luminous integral is ~131 klx against vista's documented
-//   kSolarIlluminanceLux (127,250 lx from 1361 W/m^2 x 93.5 lm/W); the solar spectrum enters
-//   the colour conversion only through its shape (see skyColourMatrix()).
+//   lambda + 10) (NREL RReDC). Its luminous integral, 683 lm/W x sum(y-bar E) x 10 nm, is
+//   132,552 lx: vista's kSolarIlluminanceLux (sky/night_light.h), so the reference's sun and
+//   the renderer's are the same (before issue 23 the constant was 127,250 lx, 1361 W/m^2 x
+//   93.5 lm/W, 4 % low, and the colour matrices below carried the difference).
 // - Ozone absorption cross-sections: Serdyuchenko et al. 2014, "High spectral resolution
 //   ozone absorption cross-sections" (Atmos. Meas. Tech. 7, 625-636; IUP Bremen data set), at
 //   293 K, sampled every 10 nm (the values Bruneton 2017 uses for its ozone layer).
@@ -210,12 +211,12 @@ glm::dmat3 skyColourMatrixAt(int zenith_index) {
     // zenith of skyColourZenithsDeg(). Fitted over altitudes 0..10 km and all view directions;
     // regenerate with the "spectral: the stored sky colour matrices are the fit" test's message.
     static const double kColumns[kSkyColourZenithCount][9] = {
-        {0.96681, -0.13460, -0.12586, 0.23518, 1.17019, 0.20170, -0.02811, -0.03045, 0.92065},
-        {0.99836, -0.14422, -0.13318, 0.20495, 1.17929, 0.20874, -0.02190, -0.03231, 0.91923},
-        {1.02626, -0.15424, -0.14015, 0.17148, 1.19018, 0.21711, -0.01489, -0.03447, 0.91756},
-        {1.00088, -0.15096, -0.13731, 0.17059, 1.19220, 0.22074, -0.01446, -0.03453, 0.91700},
-        {0.94873, -0.13968, -0.13012, 0.19143, 1.18703, 0.22165, -0.01899, -0.03282, 0.91718},
-        {0.85281, -0.11863, -0.11932, 0.22485, 1.17578, 0.22885, -0.02872, -0.02800, 0.91731},
+        {0.92814, -0.12922, -0.12083, 0.22577, 1.12338, 0.19363, -0.02699, -0.02923, 0.88382},
+        {0.95843, -0.13845, -0.12785, 0.19675, 1.13212, 0.20039, -0.02102, -0.03102, 0.88246},
+        {0.98521, -0.14807, -0.13454, 0.16462, 1.14257, 0.20843, -0.01429, -0.03309, 0.88086},
+        {0.96085, -0.14492, -0.13182, 0.16377, 1.14451, 0.21191, -0.01388, -0.03315, 0.88032},
+        {0.91078, -0.13409, -0.12492, 0.18377, 1.13955, 0.21278, -0.01823, -0.03151, 0.88049},
+        {0.81870, -0.11388, -0.11455, 0.21586, 1.12875, 0.21970, -0.02757, -0.02688, 0.88062},
     };
     const double* c = kColumns[std::clamp(zenith_index, 0, kSkyColourZenithCount - 1)];
     return glm::dmat3(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]);

@@ -3,9 +3,10 @@
 // keeps night radiances inside the half-float HDR target.
 //
 // Units. The HDR target holds radiance in "HDR units": [sky] sun_illuminance is the solar
-// irradiance at the top of the atmosphere. That irradiance is kSolarIlluminanceLux (the solar
-// constant, 1361 W/m^2, times the luminous efficacy of the extraterrestrial solar spectrum,
-// ~93.5 lm/W), so one HDR unit of irradiance is kSolarIlluminanceLux / sun_illuminance lux and
+// irradiance at the top of the atmosphere. That irradiance is kSolarIlluminanceLux, the
+// luminous integral of the tabulated extraterrestrial solar spectrum (sky/atmosphere_spectral.h
+// spectralSolarIlluminanceLux(1): 683 lm/W x sum of y-bar x E over 380..780 nm every 10 nm,
+// ASTM G-173-03 ETR; a unit test checks the two agree), so one HDR unit of irradiance is kSolarIlluminanceLux / sun_illuminance lux and
 // one HDR unit of radiance the same number of cd/m^2 (luxPerHdrUnit()).
 //
 // Pre-exposure. Noon terrain is ~0.1 HDR units and the sun's disk ~4e4; a moonless night's
@@ -21,7 +22,7 @@
 
 namespace vista {
 
-inline constexpr double kSolarIlluminanceLux = 127250.0;  // 1361 W/m^2 x 93.5 lm/W, top of the atmosphere
+inline constexpr double kSolarIlluminanceLux = 132552.0;  // lx, top of the atmosphere (was 127,250 before issue 23)
 inline constexpr double kMoonAngularRadiusDeg = 0.2587;   // mean, as seen from the earth
 inline constexpr double kMoonAlbedo = 0.12;               // normal albedo of the lunar surface
 // Starlight and airglow on a horizontal surface on a clear moonless night (~0.3 mlx of

@@ -54,6 +54,7 @@ public:
     explicit Reader(std::string_view text) : t_(tokens(text)) {}
     bool done() const { return i_ >= t_.size(); }
     std::string_view word() { return i_ < t_.size() ? t_[i_++] : std::string_view(); }
+    std::string_view peek() const { return i_ < t_.size() ? t_[i_] : std::string_view(); }
     bool numbers(std::string_view what, double* out, int n, double lo, double hi, std::string& error) {
         for (int k = 0; k < n; ++k) {
             if (i_ >= t_.size()) {
@@ -78,14 +79,52 @@ private:
     std::size_t i_ = 0;
 };
 
+constexpr double kMaxPhotometric = 1e9;  // cd or lm
+constexpr std::array<const char*, 3> kUnitNames{"intensity", "candela", "lumens"};  // LightUnit's order
+
+// The strength keywords shared by lights and volumes: `intensity I` (HDR, the old unit),
+// `candela C`, `lumens L`; and `radius R|auto`. Returns false if key is none of them; else
+// fills error on failure. radius_given records an explicit radius (a photometric light without
+// one gets radius auto).
+bool strengthKey(std::string_view key, Reader& r, float& intensity, LightUnit& unit, float& radius_m,
+                 bool& radius_given, std::string& error) {
+    double v[1];
+    if (key == "radius") {
+        radius_given = true;
+        if (r.peek() == "auto") {
+            r.word();
+            radius_m = -1.0f;
+            return true;
+        }
+        if (r.numbers(key, v, 1, 0.0, 1e5, error)) radius_m = float(v[0]);
+        else error += " (or 'auto': from the intensity and [lights] cutoff_lux)";
+        return true;
+    }
+    for (int u = 0; u < 3; ++u) {
+        if (key != kUnitNames[std::size_t(u)]) continue;
+        if (r.numbers(key, v, 1, 0.0, u == 0 ? 1e7 : kMaxPhotometric, error)) {
+            intensity = float(v[0]);
+            unit = LightUnit(u);
+        }
+        return true;
+    }
+    return false;
+}
+
+std::string strengthText(float intensity, LightUnit unit, float radius_m) {
+    std::string s = radius_m < 0.0f ? "  radius auto" : "  radius " + str(radius_m);
+    return s + "  " + kUnitNames[std::size_t(unit)] + " " + str(intensity);
+}
+
 // One entry's values as fields, for the panel (NamedList::describeEntry); ranges as in the parsers.
 void describeLight(SettingsVisitor& v, Light& l) {
     static constexpr std::array<const char*, 2> types{"point", "spot"};
     v.choice({"type", "", "point or spot"}, l.type, types);
     v.field({"position", "m", "world position"}, l.position, -kMaxCoord, kMaxCoord);
-    v.field({"radius", "m", "influence radius; 0 reaches nothing"}, l.radius_m, 0.0f, 1.0e5f);
+    v.field({"radius", "m", "influence radius; 0 reaches nothing; -1 = auto (from the intensity and cutoff_lux)"}, l.radius_m, -1.0f, 1.0e5f);
     v.field({"color", "", "linear RGB"}, l.color, 0.0f, 1.0e3f);
-    v.field({"intensity", "", "irradiance scale at 1 m"}, l.intensity, 0.0f, 1.0e7f);
+    v.choice({"unit", "", "unit of intensity: intensity (HDR irradiance at 1 m), candela or lumens"}, l.unit, kUnitNames);
+    v.field({"intensity", "", "in unit: HDR irradiance at 1 m, cd (a spot: on its axis) or lm"}, l.intensity, 0.0f, float(kMaxPhotometric));
     v.field({"ground", "m", "height above the terrain; -1 = the position's y"}, l.ground_m, -1.0f, 1.0e4f);
     v.field({"shadow", "", "casts a shadow (spot: the spot shadow atlas, [shadows] spot_*; point: a depth cube, [shadows] point_*)"}, l.shadow);
     if (l.type != LightType::Spot) return;
@@ -100,8 +139,9 @@ void describeVolume(SettingsVisitor& v, LightVolume& g) {
     v.field({"count_x", "", "lights along x"}, g.count.x, 1, 10000);
     v.field({"count_y", "", "lights along y"}, g.count.y, 1, 10000);
     v.field({"count_z", "", "lights along z"}, g.count.z, 1, 10000);
-    v.field({"radius", "m", "radius of each light"}, g.radius_m, 0.0f, 1.0e5f);
-    v.field({"intensity", "", "irradiance scale at 1 m of each light"}, g.intensity, 0.0f, 1.0e7f);
+    v.field({"radius", "m", "radius of each light; -1 = auto (from the intensity and cutoff_lux)"}, g.radius_m, -1.0f, 1.0e5f);
+    v.choice({"unit", "", "unit of intensity: intensity (HDR irradiance at 1 m), candela or lumens"}, g.unit, kUnitNames);
+    v.field({"intensity", "", "of each light, in unit: HDR irradiance at 1 m, cd or lm"}, g.intensity, 0.0f, float(kMaxPhotometric));
     v.field({"saturation", "", "HSV saturation of the random hues"}, g.saturation, 0.0f, 1.0f);
     v.field({"value", "", "HSV value of the random hues"}, g.value, 0.0f, 1.0f);
     v.field({"jitter", "", "random offset, fraction of a grid cell"}, g.jitter, 0.0f, 1.0f);
@@ -148,12 +188,19 @@ void describe(SettingsVisitor& v, LightsSettings& s) {
     v.field({"animation_seed", "", "which lights move and their phases"}, seed, 0, 0x7FFFFFFF);
     s.animation.seed = std::uint32_t(seed);
     NamedList lights(s.lights, &NamedLight::light, parseLightSpec, formatLightSpec, describeLight);
-    v.list({"light", "", "a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
+    v.field({"cutoff_lux", "lx",
+             "a light with `radius auto` (the default with candela or lumens) reaches as far as its brightest channel's "
+             "illuminance I * max(color) / d^2 stays above this (r = sqrt(I * max(color) / cutoff_lux - 0.01 m^2)); the "
+             "falloff's window takes it smoothly to 0 there"},
+            s.cutoff_lux, 1.0e-6f, 1.0e3f);
+    v.list({"light", "", "a light: point|spot X Y Z (m), then any of candela C (cd; a spot: on its axis), lumens L (lm, "
+                         "over the cone's solid angle), intensity I (HDR irradiance at 1 m, the old unit), "
+                         "radius R (m) or radius auto (the default with candela or lumens), color R G B (filters the cd or lm), "
                          "direction X Y Z, cone INNER OUTER (deg), shadow on|off (default on; point lights with [shadows] point_enabled), ground H (m above the terrain)"},
            lights);
     NamedList volumes(s.volumes, &NamedLightVolume::volume, parseVolumeSpec, formatVolumeSpec, describeVolume);
     v.list({"volume", "", "a grid of lights of random hue: box X0 Y0 Z0 X1 Y1 Z1 (m), then any of count NX NY NZ, "
-                          "radius R (m), intensity I, saturation S, value V, jitter J, seed N, hue MIN MAX, ground H (m)"},
+                          "radius R (m) or auto, candela C, lumens L or intensity I (as a light's), saturation S, value V, jitter J, seed N, hue MIN MAX, ground H (m)"},
            volumes);
 }
 
@@ -167,17 +214,14 @@ std::string parseLightSpec(std::string_view text, Light& out) {
     double v[3];
     if (!r.numbers("position", v, 3, -kMaxCoord, kMaxCoord, error)) return error;
     out.position = {v[0], v[1], v[2]};
+    bool radius_given = false;
     while (!r.done()) {
         std::string_view key = r.word();
-        if (key == "radius") {
-            if (!r.numbers(key, v, 1, 0.0, 1e5, error)) return error;
-            out.radius_m = float(v[0]);
+        if (strengthKey(key, r, out.intensity, out.unit, out.radius_m, radius_given, error)) {
+            if (!error.empty()) return error;
         } else if (key == "color") {
             if (!r.numbers(key, v, 3, 0.0, 1e3, error)) return error;
             out.color = {float(v[0]), float(v[1]), float(v[2])};
-        } else if (key == "intensity") {
-            if (!r.numbers(key, v, 1, 0.0, 1e7, error)) return error;
-            out.intensity = float(v[0]);
         } else if (key == "direction") {
             if (!r.numbers(key, v, 3, -1e6, 1e6, error)) return error;
             if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) return "direction must not be 0 0 0";
@@ -196,9 +240,11 @@ std::string parseLightSpec(std::string_view text, Light& out) {
                 return "shadow: expected 'on' or 'off', got '" + std::string(value) + "'";
             out.shadow = value == "on";
         } else {
-            return "unknown word '" + std::string(key) + "' (expected radius, color, intensity, direction, cone, shadow or ground)";
+            return "unknown word '" + std::string(key) +
+                   "' (expected radius, color, candela, lumens, intensity, direction, cone, shadow or ground)";
         }
     }
+    if (out.unit != LightUnit::Hdr && !radius_given) out.radius_m = -1.0f;
     return {};
 }
 
@@ -211,9 +257,12 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out) {
     if (!r.numbers("box", v, 6, -kMaxCoord, kMaxCoord, error)) return error;
     out.min_m = {v[0], v[1], v[2]};
     out.max_m = {v[3], v[4], v[5]};
+    bool radius_given = false;
     while (!r.done()) {
         std::string_view key = r.word();
-        if (key == "count") {
+        if (strengthKey(key, r, out.intensity, out.unit, out.radius_m, radius_given, error)) {
+            if (!error.empty()) return error;
+        } else if (key == "count") {
             if (!r.numbers(key, v, 3, 1.0, 10000.0, error)) return error;
             for (int k = 0; k < 3; ++k)
                 if (v[k] != std::floor(v[k])) return "count: " + str(v[k]) + " is not a whole number";
@@ -222,12 +271,6 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out) {
             const std::uint64_t n = std::uint64_t(out.count.x) * std::uint64_t(out.count.y) * std::uint64_t(out.count.z);
             if (n > kMaxVolumeLights)
                 return "count: " + std::to_string(n) + " lights is more than " + std::to_string(kMaxVolumeLights);
-        } else if (key == "radius") {
-            if (!r.numbers(key, v, 1, 0.0, 1e5, error)) return error;
-            out.radius_m = float(v[0]);
-        } else if (key == "intensity") {
-            if (!r.numbers(key, v, 1, 0.0, 1e7, error)) return error;
-            out.intensity = float(v[0]);
         } else if (key == "saturation" || key == "value" || key == "jitter") {
             if (!r.numbers(key, v, 1, 0.0, 1.0, error)) return error;
             (key == "saturation" ? out.saturation : key == "value" ? out.value : out.jitter) = float(v[0]);
@@ -245,18 +288,19 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out) {
             out.ground_m = float(v[0]);
         } else {
             return "unknown word '" + std::string(key) +
-                   "' (expected count, radius, intensity, saturation, value, jitter, seed, hue or ground)";
+                   "' (expected count, radius, candela, lumens, intensity, saturation, value, jitter, seed, hue or ground)";
         }
     }
+    if (out.unit != LightUnit::Hdr && !radius_given) out.radius_m = -1.0f;
     return {};
 }
 
 std::string formatLightSpec(const Light& l) {
     std::string s = l.type == LightType::Spot ? "spot " : "point ";
     s += str(l.position.x) + " " + str(l.position.y) + " " + str(l.position.z);
-    s += "  radius " + str(l.radius_m);
+    s += l.radius_m < 0.0f ? "  radius auto" : "  radius " + str(l.radius_m);
     s += "  color " + str(l.color.r) + " " + str(l.color.g) + " " + str(l.color.b);
-    s += "  intensity " + str(l.intensity);
+    s += std::string("  ") + kUnitNames[std::size_t(l.unit)] + " " + str(l.intensity);
     if (l.type == LightType::Spot) {
         s += "  direction " + str(l.direction.x) + " " + str(l.direction.y) + " " + str(l.direction.z);
         s += "  cone " + str(l.inner_deg) + " " + str(l.outer_deg);
@@ -270,7 +314,7 @@ std::string formatVolumeSpec(const LightVolume& v) {
     std::string s = "box " + str(v.min_m.x) + " " + str(v.min_m.y) + " " + str(v.min_m.z) + "  " + str(v.max_m.x) +
                     " " + str(v.max_m.y) + " " + str(v.max_m.z);
     s += "  count " + std::to_string(v.count.x) + " " + std::to_string(v.count.y) + " " + std::to_string(v.count.z);
-    s += "  radius " + str(v.radius_m) + "  intensity " + str(v.intensity);
+    s += strengthText(v.intensity, v.unit, v.radius_m);
     s += "  saturation " + str(v.saturation) + "  value " + str(v.value) + "  jitter " + str(v.jitter);
     s += "  seed " + std::to_string(v.seed);
     if (v.hue_min != 0.0f || v.hue_max != 1.0f) s += "  hue " + str(v.hue_min) + " " + str(v.hue_max);

@@ -7,15 +7,19 @@
 // section; entries keep file order. The value is a type word and a position, then keyword groups
 // in any order; omitted groups keep the defaults of Light / LightVolume (renderer/lighting/lights.h):
 //
-//   light.lantern = point 10 42 -5  radius 12  color 1 0.7 0.4  intensity 30
-//   light.beam    = spot 0 50 0  radius 40  color 1 1 1  intensity 200  direction 0 -1 0  cone 20 30
+//   light.lantern = point 10 42 -5  color 1 0.7 0.4  candela 100            (radius auto)
+//   light.beam    = spot 0 50 0  radius 40  color 1 1 1  lumens 2000  direction 0 -1 0  cone 20 30
+//   light.old     = point 0 9 0  radius 12  intensity 30                      (HDR units, as before)
 //   volume.village = box -200 30 -150  200 40 150  count 16 1 12  radius 18  intensity 40
 //                    saturation 0.5  value 1  jitter 0.3  seed 23        (one line in the file)
 //
 //   point|spot X Y Z        m, world position (|X|,|Y|,|Z| <= 1e8)
-//   radius R                m, [0, 1e5]; 0 reaches nothing
-//   color R G B             linear RGB, each [0, 1e3]
-//   intensity I             irradiance scale at 1 m, [0, 1e7]
+//   radius R | auto         m, [0, 1e5]; 0 reaches nothing; auto (radius_m -1): from the intensity
+//                           and cutoff_lux (lights.h autoRadiusM), the default with candela or lumens
+//   color R G B             linear RGB, each [0, 1e3]; filters candela and lumens
+//   candela C               cd, [0, 1e9], luminous intensity (a spot: on its axis)      unit Candela
+//   lumens L                lm, [0, 1e9], flux over the cone's solid angle (lightSolidAngleSr) unit Lumen
+//   intensity I             HDR irradiance at 1 m, [0, 1e7] (the old unit; scenes before issue 23) unit Hdr
 //   direction X Y Z         spot axis, not all zero (normalised on use)
 //   cone INNER OUTER        deg, spot half-angles, 0 <= INNER <= OUTER <= 180
 //   shadow on|off           spot lights: may take a tile of the spot shadow atlas; point lights a
@@ -83,6 +87,7 @@ struct LightsSettings {
     float hash_slack = 0.25f;       //!< extra hash-table room kept for incremental updates, fraction 0..4
     bool glow = true;               //!< glow around lights in fog (single scattering, renderer/lighting/lamp_glow.h); only where the medium is dense enough
     int glow_max_lights = 32;       //!< lights that glow at most, the brightest on screen, 0..1024
+    float cutoff_lux = 0.05f;       //!< lx, illuminance where a light of `radius auto` ends (lights.h autoRadiusM), 1e-6..1e3
     LightAnimation animation;       //!< animation = none|circle|bob, animation_amplitude_m, animation_period_s, animation_fraction, animation_seed
     std::vector<NamedLight> lights;          //!< light.NAME keys
     std::vector<NamedLightVolume> volumes;   //!< volume.NAME keys

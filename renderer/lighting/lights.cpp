@@ -96,6 +96,41 @@ glm::vec3 hsvToRgb(float hue, float saturation, float value) {
     return {channel(5.0f), channel(3.0f), channel(1.0f)};
 }
 
+double lightSolidAngleSr(const Light& light) {
+    if (light.type != LightType::Spot) return 4.0 * std::numbers::pi;
+    const double outer = std::clamp(double(light.outer_deg), 0.0, 180.0);
+    const double inner = std::clamp(double(light.inner_deg), 0.0, outer);
+    return 2.0 * std::numbers::pi * (1.0 - 0.5 * (std::cos(inner * kDegToRad) + std::cos(outer * kDegToRad)));
+}
+
+double candela(const Light& light, double lux_per_hdr_unit) {
+    const double v = std::max(double(light.intensity), 0.0);
+    switch (light.unit) {
+        case LightUnit::Candela: return v;
+        case LightUnit::Lumen: {
+            const double sr = lightSolidAngleSr(light);
+            return sr > 0.0 ? v / sr : 0.0;
+        }
+        case LightUnit::Hdr: break;
+    }
+    return v * lux_per_hdr_unit;
+}
+
+double autoRadiusM(double cd, double max_channel, double cutoff_lux) {
+    const double e1 = std::max(cd, 0.0) * std::max(max_channel, 0.0);  // lux at 1 m, brightest channel
+    if (!(cutoff_lux > 0.0)) return kMaxLightRadiusM;
+    return std::min(std::sqrt(std::max(e1 / cutoff_lux - double(kFalloffEpsM2), 0.0)), kMaxLightRadiusM);
+}
+
+Light resolveUnits(Light light, double lux_per_hdr_unit, double cutoff_lux) {
+    const double cd = candela(light, lux_per_hdr_unit);
+    if (light.radius_m < 0.0f)
+        light.radius_m = float(autoRadiusM(cd, std::max({light.color.r, light.color.g, light.color.b}), cutoff_lux));
+    if (light.unit != LightUnit::Hdr) light.intensity = float(cd / lux_per_hdr_unit);
+    light.unit = LightUnit::Hdr;
+    return light;
+}
+
 std::uint64_t lightCount(const LightVolume& volume) {
     if (volume.count.x < 1 || volume.count.y < 1 || volume.count.z < 1) return 0;
     return std::uint64_t(volume.count.x) * std::uint64_t(volume.count.y) * std::uint64_t(volume.count.z);
@@ -118,8 +153,9 @@ void generateLights(const LightVolume& volume, std::vector<Light>& out) {
                                    volume.value);
                 glm::dvec3 j(rng.uniform(), rng.uniform(), rng.uniform());
                 l.position = lo + (glm::dvec3(x, y, z) + 0.5 + (j - 0.5) * jitter) * cell;
-                l.radius_m = std::max(0.0f, volume.radius_m);
+                l.radius_m = volume.radius_m < 0.0f ? -1.0f : volume.radius_m;  // < 0: auto
                 l.intensity = volume.intensity;
+                l.unit = volume.unit;
                 out.push_back(l);
             }
 }

@@ -8,6 +8,18 @@
 // BRDF * max(dot(n, l), 0) at distance d; well inside the radius falloff ~ 1 / d^2, so
 // intensity is the irradiance (HDR units, like [sky] sun_illuminance) at 1 m from the light.
 //
+// Photometric units (issue 23). A scene gives a light's strength in one of three units
+// (LightUnit): Candela, its luminous intensity (a spot: on its axis); Lumen, its luminous flux,
+// spread over the solid angle its cone covers (lightSolidAngleSr); or Hdr, the renderer's
+// irradiance at 1 m above (the old `intensity`, kept so older scenes render as before). Candela
+// and lumens are for colour 1 1 1: the colour filters them (a light of colour c gives c * I lux
+// at 1 m in each channel). resolveUnits() turns them into Hdr through the lux per HDR unit the
+// sun sets (sky/night_light.h luxPerHdrUnit: I cd give I lux at 1 m, I / luxPerHdrUnit HDR
+// units). A radius below 0 is "auto": the distance where the light's brightest channel's
+// illuminance I * max(c) / (d^2 + eps) (the falloff before its window) drops to cutoff_lux,
+//     r = sqrt(max(I * max(c) / cutoff_lux - eps, 0)),
+// so the windowed falloff takes it smoothly to 0 there (autoRadiusM).
+//
 // Falloff (windowed inverse square, after Karis 2013, "Real shading in Unreal Engine 4"):
 //     falloff(d, r) = saturate(1 - (d / r)^4)^2 / (d^2 + eps),   eps = kFalloffEpsM2 = 0.01 m^2
 // It is 0 for every d >= r (exactly: (d/r)^4 >= 1), at most 1 / eps = 100 at d = 0 (a bulb of
@@ -34,13 +46,16 @@ namespace vista {
 inline constexpr float kFalloffEpsM2 = 0.01f;  // m^2, eps of the falloff
 
 enum class LightType : int { Point, Spot };
+// What Light::intensity counts: HDR irradiance at 1 m (the old unit), candela or lumens.
+enum class LightUnit : int { Hdr, Candela, Lumen };
 
 struct Light {
     LightType type = LightType::Point;
     glm::dvec3 position{0.0};          // m, world
-    float radius_m = 10.0f;            // m, influence radius: the falloff is 0 from here on; >= 0
+    float radius_m = 10.0f;            // m, influence radius: the falloff is 0 from here on; < 0: auto (autoRadiusM)
     glm::vec3 color{1.0f};             // linear RGB
-    float intensity = 10.0f;           // irradiance scale at 1 m (see the header comment); >= 0
+    float intensity = 10.0f;           // in `unit` (see the header comment); >= 0
+    LightUnit unit = LightUnit::Hdr;   // Hdr: irradiance scale at 1 m; Candela; Lumen
     glm::vec3 direction{0, -1, 0};     // spot axis (world, normalised on use); point lights ignore it
     float inner_deg = 20.0f;           // deg, spot half-angle of full intensity, [0, outer_deg]
     float outer_deg = 30.0f;           // deg, spot half-angle where the light ends, [0, 180]
@@ -80,6 +95,22 @@ struct Sphere {
 // wider cones use the point sphere. Each contains the apex, the rim and the cap.
 Sphere boundingSphere(const Light& light);
 
+// Photometry (see the header comment). The solid angle (sr) a light's cone covers, weighted by
+// its cone function: 4 pi for a point light; a spot, integrating spot(cos a) over the sphere
+// (the smoothstep in cos a integrates to half its width), 2 pi (1 - (cos inner + cos outer) / 2).
+double lightSolidAngleSr(const Light& light);
+// The light's luminous intensity (cd, for colour 1 1 1; a spot: on its axis) from its unit:
+// Candela as is, Lumen / lightSolidAngleSr, Hdr times lux_per_hdr_unit.
+double candela(const Light& light, double lux_per_hdr_unit);
+// The auto radius (m) for a light of cd candela with brightest channel max_channel:
+// sqrt(max(cd * max_channel / cutoff_lux - kFalloffEpsM2, 0)), at most kMaxLightRadiusM (also
+// for cutoff_lux <= 0).
+double autoRadiusM(double cd, double max_channel, double cutoff_lux);
+inline constexpr double kMaxLightRadiusM = 1e5;
+// The light in the renderer's units: intensity in Hdr (candela / lux_per_hdr_unit) and, where
+// the radius is auto, autoRadiusM(candela, max colour, cutoff_lux). Hdr lights keep their value.
+Light resolveUnits(Light light, double lux_per_hdr_unit, double cutoff_lux);
+
 // HSV (each in [0, 1]; hue wraps) to RGB, applied to linear values.
 glm::vec3 hsvToRgb(float hue, float saturation, float value);
 
@@ -92,8 +123,9 @@ struct LightVolume {
     glm::dvec3 min_m{-50.0, 0.0, -50.0};  // m, world, box corner
     glm::dvec3 max_m{50.0, 10.0, 50.0};   // m, world, opposite corner (min/max per axis are sorted on use)
     glm::ivec3 count{4, 1, 4};            // lights per axis, >= 1 (a volume of count 0 adds none)
-    float radius_m = 15.0f;               // m
+    float radius_m = 15.0f;               // m; < 0: auto, as Light::radius_m
     float intensity = 20.0f;              // as Light::intensity
+    LightUnit unit = LightUnit::Hdr;      // as Light::unit
     float saturation = 0.7f;              // HSV saturation of the random hue, [0, 1]
     float value = 1.0f;                   // HSV value, [0, 1]
     float jitter = 0.0f;                  // fraction of a cell, [0, 1]

@@ -37,7 +37,7 @@ constexpr int kHashHeaderWords = (LightHash::kMaxLevels + 1) * kHashLevelWords;
 
 }  // namespace
 
-std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground) {
+std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground, double lux_per_hdr_unit) {
     std::vector<Light> out;
     for (const NamedLight& l : s.lights) {
         out.push_back(l.light);
@@ -51,6 +51,7 @@ std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeigh
         for (std::size_t i = first; i < out.size(); ++i)
             out[i].position.y = (ground ? ground(out[i].position.x, out[i].position.z) : floor_y) + v.volume.ground_m;
     }
+    for (Light& l : out) l = resolveUnits(l, lux_per_hdr_unit, double(s.cutoff_lux));
     return out;
 }
 
@@ -122,15 +123,18 @@ void LocalLights::readOverflow() {
 }
 
 bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& m, double time_s,
-                          const GroundHeight& ground, float radiance_scale) {
+                          const GroundHeight& ground, double lux_per_hdr_unit, float radiance_scale) {
     const auto start = std::chrono::steady_clock::now();
     readOverflow();
     max_lights_per_cell_ = s.max_lights_per_cell;
     // Collect when the entries change (compared field by field, nothing copied on a steady
     // frame); animate every frame when something moves.
-    const bool changed = !collected_ || s.lights != lights_ || s.volumes != volumes_ || bool(ground) != had_ground_;
+    const bool changed = !collected_ || s.lights != lights_ || s.volumes != volumes_ || bool(ground) != had_ground_ ||
+                         lux_per_hdr_unit != lux_per_hdr_unit_ || s.cutoff_lux != cutoff_lux_;
     if (changed) {
-        base_ = s.enabled ? collectSceneLights(s, ground) : std::vector<Light>{};
+        base_ = s.enabled ? collectSceneLights(s, ground, lux_per_hdr_unit) : std::vector<Light>{};
+        lux_per_hdr_unit_ = lux_per_hdr_unit;
+        cutoff_lux_ = s.cutoff_lux;
         lights_ = s.lights;
         volumes_ = s.volumes;
         had_ground_ = bool(ground);
@@ -149,6 +153,10 @@ bool LocalLights::prepare(const LightsSettings& s, const ViewParams& view, const
         hash_uploaded_ = hash_uploaded_ && !changed && !animated;
     }
     stats_.count = animated_.size();
+    if (changed) {
+        stats_.max_radius_m = 0.0;
+        for (const Light& l : base_) stats_.max_radius_m = std::max(stats_.max_radius_m, double(l.radius_m));
+    }
     stats_.longest_range = 0;
     stats_.chunks = 1;
     if (animated_.empty()) return false;

@@ -53,8 +53,10 @@ using GroundHeight = std::function<double(double x_m, double z_m)>;
 
 // The lights of [lights]: explicit entries, then each volume's; volumes with `ground` put their
 // lights that high above ground(x, z) (above the box's lower y without a ground function), and
-// so do explicit lights with `ground` (they keep their y without a ground function).
-std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground);
+// so do explicit lights with `ground` (they keep their y without a ground function). Every light
+// comes out in HDR units with its radius resolved: resolveUnits(light, lux_per_hdr_unit,
+// s.cutoff_lux) (lights.h; lux_per_hdr_unit is sky/night_light.h luxPerHdrUnit(sun_illuminance)).
+std::vector<Light> collectSceneLights(const LightsSettings& s, const GroundHeight& ground, double lux_per_hdr_unit);
 
 // Longest list a tile or cluster keeps (the culling pass's shared-memory list).
 inline constexpr int kMaxLightsPerCell = 4096;
@@ -77,6 +79,7 @@ ProgramList localLightPrograms();
 
 struct LocalLightStats {
     std::uint64_t count = 0;        // lights this frame
+    double max_radius_m = 0.0;      // largest radius of them (after resolveUnits: auto radii resolved)
     std::uint64_t visible = 0;      // of them, on the GPU: tiled and clustered keep those whose sphere meets the view frustum
     std::uint64_t skipped = 0;      // tiled, clustered: in the frustum but below min_screen_px on screen (not on the GPU)
     double build_ms = 0.0;          // CPU: collect, animate, hash update, upload
@@ -109,9 +112,11 @@ public:
     // reach a visible point (none at all, or, for tiled and clustered, none whose bounding
     // sphere meets the view frustum): then add no passes.
     // ground (may be empty) gives the terrain height (m) at world x, z for volumes with `ground`.
-    // radiance_scale multiplies every light's colour * intensity (the frame's pre-exposure).
+    // lux_per_hdr_unit converts candela and lumens (sky/night_light.h luxPerHdrUnit of the
+    // scene's sun_illuminance; collectSceneLights). radiance_scale multiplies every light's
+    // colour * intensity (the frame's pre-exposure).
     bool prepare(const LightsSettings& s, const ViewParams& view, const ViewMatrices& matrices, double time_s,
-                 const GroundHeight& ground, float radiance_scale = 1.0f);
+                 const GroundHeight& ground, double lux_per_hdr_unit, float radiance_scale = 1.0f);
     // Needs targets.depth, .albedo, .normal; adds to targets.hdr (and makes targets.light_heat).
     void addPasses(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets, CounterReadback& counters,
                    const LightPassOptions& options);
@@ -148,6 +153,8 @@ private:
     std::vector<NamedLight> lights_;            // the entries the lights were collected from
     std::vector<NamedLightVolume> volumes_;
     bool had_ground_ = false, collected_ = false;
+    double lux_per_hdr_unit_ = 0.0;
+    float cutoff_lux_ = 0.0f;
     std::vector<Light> base_, animated_;
     LightAnimation animation_;
     std::vector<Sphere> world_spheres_;

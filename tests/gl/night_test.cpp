@@ -80,7 +80,11 @@ TEST_CASE("gl: night at sun -12 deg is readable under a full moon and, darker, u
     CHECK(full.above > 0.6);
     CHECK(none.mean > 0.04);
     CHECK(none.above > 0.4);
-    CHECK(none.mean < full.mean);
+    // Darker under a new moon: physically (the pre-exposure below, ~7x). On the display, auto
+    // exposure brings both frames near the same mean (0.10 each with the local lights off);
+    // before issue 23 the moonless frame read darker only because lamps of 10^5-10^6 cd held its
+    // exposure down. With the default scene's realistic lamps (100-800 cd) it reads brighter
+    // (0.16 against 0.12): its exposure is higher and the lamps' pools fill more of the display.
     CHECK(full.report.counters.at("sky.pre_exposure") > 1.0);
     CHECK(none.report.counters.at("sky.pre_exposure") > full.report.counters.at("sky.pre_exposure"));
     CHECK(ran(full.report, "postfx.scotopic"));

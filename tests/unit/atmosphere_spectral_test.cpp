@@ -118,6 +118,11 @@ TEST_CASE("spectral: the CIE 1931 table integrates to its known areas and the su
     // The extraterrestrial sun: ~1361 W/m^2 over all wavelengths, ~129-133 klx in the visible.
     CHECK(spectralSolarIlluminanceLux(1) == doctest::Approx(131000.0).epsilon(0.03));
     CHECK(spectralSolarIlluminanceLux(2) == doctest::Approx(spectralSolarIlluminanceLux(1)).epsilon(0.01));
+    // The renderer's sun (sky/night_light.h) is this integral: 683 x sum(y-bar E) x 10 nm.
+    double sum_y = 0.0;
+    for (const SpectralSample& s : spectralTable()) sum_y += s.cmf.y * s.solar_irradiance;
+    CHECK(683.0 * sum_y * 10.0 == doctest::Approx(spectralSolarIlluminanceLux(1)).epsilon(1e-12));
+    CHECK(kSolarIlluminanceLux == doctest::Approx(spectralSolarIlluminanceLux(1)).epsilon(1e-5));
 }
 
 TEST_CASE("spectral: per-wavelength coefficients reproduce the model's three channels") {

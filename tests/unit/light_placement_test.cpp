@@ -44,7 +44,7 @@ TEST_CASE("light placement: ground is the water's surface where the sea covers t
     v.count = {20, 1, 1};
     v.ground_m = 2.5f;
     lights.volumes.push_back({"shore", v});
-    for (const Light& l : collectSceneLights(lights, lightGround(slope, water)))
+    for (const Light& l : collectSceneLights(lights, lightGround(slope, water), 1.0))
         CHECK(l.position.y == doctest::Approx(std::max(l.position.x / 10.0, 1.0) + 2.5));
 }
 
@@ -95,7 +95,7 @@ TEST_CASE("light placement: the default scene's lamps stand above the sea and ch
     for (const NamedLightVolume& v : s.lights.volumes)
         if (v.name == "shore_path") shore.volumes.push_back(v);
     REQUIRE(shore.volumes.size() == 1);
-    for (const Light& l : collectSceneLights(shore, lightGround(terrain, s.water))) {
+    for (const Light& l : collectSceneLights(shore, lightGround(terrain, s.water), 1.0)) {
         const double floor = terrain(l.position.x, l.position.z);
         over_sea += floor < s.water.level_m;
         CHECK(l.position.y >= std::max(floor, double(s.water.level_m)) + 2.5 - 1e-6);

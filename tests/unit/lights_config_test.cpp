@@ -102,9 +102,9 @@ TEST_CASE("lights config: bad values name the key, the bad token and what is acc
     CHECK(oneError("[lights]\nlight.a = lamp 0 0 0\n", s, 2) ==
           "[lights] light.a = lamp 0 0 0 is not accepted: expected 'point' or 'spot', got 'lamp'");
     CHECK(oneError("[lights]\n\nlight.a = point 0 0 0  radius -1\n", s, 3) ==
-          "[lights] light.a = point 0 0 0  radius -1 is not accepted: radius: -1 is outside [0, 100000]");
+          "[lights] light.a = point 0 0 0  radius -1 is not accepted: radius: -1 is outside [0, 100000] (or 'auto': from the intensity and [lights] cutoff_lux)");
     CHECK(contains(oneError("[lights]\nlight.a = point 0 0 0 glow 2\n", s, 2),
-                   "unknown word 'glow' (expected radius, color, intensity, direction, cone, shadow or ground)"));
+                   "unknown word 'glow' (expected radius, color, candela, lumens, intensity, direction, cone, shadow or ground)"));
     CHECK(contains(oneError("[lights]\nvolume.v = box 0 0 0 1 1 1 count 10000 10000 10000\n", s, 2),
                    "is not accepted: count: 1000000000000 lights is more than 1000000"));
     CHECK(s.lights.lights.empty());  // a bad entry is not added
@@ -177,7 +177,9 @@ TEST_CASE("lights config: save then load reproduces the lists exactly and in ord
     CHECK(text.find("light.lantern") < text.find("light.beam"));
     CHECK(text.find("[sky]") < text.find("[lights]"));
     CHECK(text.find("[lights]") < text.find("[postfx]"));
-    CHECK(contains(text, "\n; a light: point|spot X Y Z (m), then any of radius R (m), color R G B, intensity I, "
+    CHECK(contains(text, "\n; a light: point|spot X Y Z (m), then any of candela C (cd; a spot: on its axis), lumens L (lm, "
+                         "over the cone's solid angle), intensity I (HDR irradiance at 1 m, the old unit), "
+                         "radius R (m) or radius auto (the default with candela or lumens), color R G B (filters the cd or lm), "
                          "direction X Y Z, cone INNER OUTER (deg), shadow on|off (default on; point lights with [shadows] point_enabled), ground H (m above the terrain) (one light.NAME key per entry, NAME: letters, "
                          "digits, _)\nlight.lantern = "));
     bool long_line = false;
@@ -229,7 +231,7 @@ TEST_CASE("lights config: --set lights.light.NAME adds or replaces one entry") {
     CHECK(s.lights.culling == LightCulling::Hashed);
 
     CHECK(oneOverrideError("lights.light.lamp=point 0 0 0 radius 1e9", s) ==
-          "[lights] light.lamp = point 0 0 0 radius 1e9 is not accepted: radius: 1e9 is outside [0, 100000]");
+          "[lights] light.lamp = point 0 0 0 radius 1e9 is not accepted: radius: 1e9 is outside [0, 100000] (or 'auto': from the intensity and [lights] cutoff_lux)");
     CHECK(s.lights.lights[0].light.position == glm::dvec3(4, 5, 6));  // unchanged
     CHECK(contains(oneOverrideError("lights.light.a-b=point 0 0 0", s), "the name 'a-b' is not accepted"));
     CHECK(oneOverrideError("lights.lihgt.lamp=point 0 0 0", s) ==

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 #include <set>
 #include <string>
 
@@ -289,4 +291,94 @@ TEST_CASE("lights: [lights] lists each plain key once with in-range defaults") {
         CHECK(unique.count(key) == 1);
     CHECK(tilePixels(s.tile_size) == 16);
     CHECK(tilePixels(LightTileSize::Px32) == 32);
+}
+
+TEST_CASE("lights: candela and lumens become HDR units through lux per HDR unit, and the auto radius is exact") {
+    // Candela: I cd give I lux at 1 m, I / luxPerHdrUnit HDR units; Hdr lights keep their value.
+    Light cd;
+    cd.unit = LightUnit::Candela;
+    cd.intensity = 1000.0f;
+    cd.radius_m = 7.0f;
+    const Light r = resolveUnits(cd, 250.0, 0.05);
+    CHECK(r.unit == LightUnit::Hdr);
+    CHECK(r.intensity == 4.0f);  // 1000 / 250
+    CHECK(r.radius_m == 7.0f);   // explicit radius kept
+    Light old;  // the old unit: unchanged, so scenes from before render as they did
+    old.intensity = 30.0f;
+    old.radius_m = 12.0f;
+    CHECK(resolveUnits(old, 250.0, 0.05) == old);
+    CHECK(candela(old, 250.0) == 7500.0);
+
+    // Lumens over the cone's solid angle: 4 pi for a point light; a spot 2 pi (1 - (cos i + cos o) / 2).
+    Light lm;
+    lm.unit = LightUnit::Lumen;
+    lm.intensity = 1200.0f;
+    CHECK(candela(lm, 1.0) == doctest::Approx(1200.0 / (4.0 * std::numbers::pi)).epsilon(1e-12));
+    lm.type = LightType::Spot;
+    lm.inner_deg = lm.outer_deg = 60.0f;  // hard edge: the cap's 2 pi (1 - cos 60) = pi
+    CHECK(lightSolidAngleSr(lm) == doctest::Approx(std::numbers::pi).epsilon(1e-12));
+    CHECK(candela(lm, 1.0) == doctest::Approx(1200.0 / std::numbers::pi).epsilon(1e-12));
+    lm.inner_deg = 0.0f;
+    lm.outer_deg = 90.0f;  // 2 pi (1 - (1 + 0) / 2) = pi
+    CHECK(lightSolidAngleSr(lm) == doctest::Approx(std::numbers::pi).epsilon(1e-12));
+    // ... and that is the shader's cone (spotFactor) integrated over the sphere (midpoint rule in cos a).
+    for (auto [inner, outer] : {std::pair{20.0f, 50.0f}, std::pair{45.0f, 65.0f}, std::pair{0.0f, 180.0f}}) {
+        lm.inner_deg = inner;
+        lm.outer_deg = outer;
+        const SpotCone cone = spotCone(lm);
+        const int n = 200000;
+        double sum = 0.0;
+        for (int k = 0; k < n; ++k) sum += double(spotFactor(cone, float(-1.0 + (k + 0.5) * 2.0 / n)));
+        CHECK(2.0 * std::numbers::pi * sum * 2.0 / n == doctest::Approx(lightSolidAngleSr(lm)).epsilon(1e-4));
+    }
+
+    // Auto radius: where I * max(colour) / (d^2 + eps) falls to cutoff_lux.
+    CHECK(autoRadiusM(100.0, 1.0, 0.05) == doctest::Approx(std::sqrt(2000.0 - 0.01)).epsilon(1e-12));  // 44.72 m
+    CHECK(autoRadiusM(300.0, 1.0, 0.05) == doctest::Approx(std::sqrt(6000.0 - 0.01)).epsilon(1e-12));  // 77.46 m
+    CHECK(autoRadiusM(1e-4, 1.0, 0.05) == 0.0);        // below eps * cutoff: reaches nothing
+    CHECK(autoRadiusM(1e12, 1.0, 1e-6) == kMaxLightRadiusM);
+    Light a;
+    a.unit = LightUnit::Candela;
+    a.intensity = 400.0f;
+    a.color = {0.5f, 0.25f, 0.1f};
+    a.radius_m = -1.0f;
+    const Light ra = resolveUnits(a, 100.0, 0.02);
+    const double rr = double(ra.radius_m);
+    CHECK(rr == doctest::Approx(std::sqrt(400.0 * 0.5 / 0.02 - 0.01)).epsilon(1e-6));  // 100.0 m
+    CHECK(400.0 * 0.5 / (rr * rr + double(kFalloffEpsM2)) == doctest::Approx(0.02).epsilon(1e-5));
+    CHECK(ra.intensity == 4.0f);
+    CHECK(falloff(float(rr * rr) * 1.0001f, ra.radius_m) == 0.0f);  // and the window ends it there
+
+    // The text format: candela / lumens set the unit and, without a radius, radius auto.
+    Light p;
+    REQUIRE(parseLightSpec("point 1 2 3  candela 300  color 1 0.72 0.42", p).empty());
+    CHECK(p.unit == LightUnit::Candela);
+    CHECK(p.intensity == 300.0f);
+    CHECK(p.radius_m == -1.0f);
+    CHECK(formatLightSpec(p) == "point 1 2 3  radius auto  color 1 0.72 0.42  candela 300");
+    REQUIRE(parseLightSpec("spot 0 9 0  radius 20  lumens 5000  cone 30 40", p).empty());
+    CHECK(p.unit == LightUnit::Lumen);
+    CHECK(p.radius_m == 20.0f);
+    Light back;
+    REQUIRE(parseLightSpec(formatLightSpec(p), back).empty());
+    CHECK(back == p);
+    REQUIRE(parseLightSpec("point 0 0 0  radius auto  intensity 3", p).empty());
+    CHECK(p.unit == LightUnit::Hdr);
+    CHECK(p.radius_m == -1.0f);
+    CHECK(parseLightSpec("point 0 0 0  candela -5", p).find("candela") != std::string::npos);
+    CHECK(parseLightSpec("point 0 0 0  radius far", p).find("auto") != std::string::npos);
+    LightVolume v;
+    REQUIRE(parseVolumeSpec("box 0 0 0 10 0 10  count 2 1 2  candela 100", v).empty());
+    CHECK(v.unit == LightUnit::Candela);
+    CHECK(v.radius_m == -1.0f);
+    std::vector<Light> lights;
+    generateLights(v, lights);
+    REQUIRE(lights.size() == 4);
+    for (const Light& l : lights) {
+        CHECK(l.unit == LightUnit::Candela);
+        CHECK(l.radius_m == -1.0f);
+    }
+    LightVolume vb;
+    REQUIRE(parseVolumeSpec(formatVolumeSpec(v), vb).empty());
+    CHECK(vb == v);
 }

@@ -222,10 +222,10 @@ TEST_CASE("spot shadows: street lights with `ground H` stand H above the terrain
     REQUIRE(parseLightSpec(formatLightSpec(l), back).empty());
     CHECK(back == l);
     s.lights = {{"a", l}, {"b", spot({1.0, 2.0, 3.0}, {0, -1, 0}, 10.0f, 30.0f)}};
-    const std::vector<Light> on = collectSceneLights(s, [](double x, double z) { return 0.5 * x - z; });
+    const std::vector<Light> on = collectSceneLights(s, [](double x, double z) { return 0.5 * x - z; }, 1.0);
     REQUIRE(on.size() == 2);
     CHECK(on[0].position.y == doctest::Approx(0.5 * 10.0 + 20.0 + 6.0));
     CHECK(on[1].position.y == 2.0);  // no `ground`: its own y
-    CHECK(collectSceneLights(s, {})[0].position.y == 999.0);  // no terrain: its own y
+    CHECK(collectSceneLights(s, {}, 1.0)[0].position.y == 999.0);  // no terrain: its own y
     CHECK_FALSE(parseLightSpec("spot 1 2 3  ground -2", l).empty());
 }
