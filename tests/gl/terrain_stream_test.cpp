@@ -156,3 +156,27 @@ TEST_CASE("gl: a streamed terrain with a tiny pool evicts and stays consistent")
     }
     CHECK(evicted > 0);
 }
+
+TEST_CASE("gl: streaming refuses what it cannot serve, naming the key or file and what is accepted") {
+    Settings s = islandScene(true);
+    s.grass.enabled = true;  // the grass reads the whole map's height texture
+    InputErrors errors = renderer().prepare(s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == "[terrain.stream] enabled");
+    CHECK(errors[0].message.find("[grass] enabled") != std::string::npos);
+
+    // An up-to-date cache with tiles of another size than the grid is refused, not replaced.
+    TileCacheKey key;
+    REQUIRE(tileCacheKey(islandFile(), key).empty());
+    const std::filesystem::path other = islandFile().parent_path() / "tile64.vtc";
+    const TerrainMapping mapping{4096.0, 600.0, 0.0, 1025, 1025};
+    REQUIRE(buildTileCache(loadHeightmap(islandFile(), 0, 0, errors), mapping, key, 64, other, true).empty());
+    s = islandScene(true);
+    s.terrain.stream.cache = other.string();
+    errors = renderer().prepare(s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == other.string());
+    CHECK(errors[0].message.find("--tile 32") != std::string::npos);
+    std::string why;
+    CHECK(TileCache::open(other, why)->tileSize() == 64);  // still there
+}
