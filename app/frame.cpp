@@ -80,9 +80,18 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
         terrain_failed_ = false;
         return errors;
     }
+    if (s.terrain.stream.enabled && (s.grass.enabled || (s.weather.enabled && s.weather.splashes))) {
+        // Both read the whole map's height texture, which a streamed terrain does not have.
+        errors.push_back({"[terrain.stream] enabled", 0, std::string("streaming does not work with ") +
+                                                             (s.grass.enabled ? "[grass] enabled" : "[weather] splashes") +
+                                                             " (it reads the whole map); accepted: turn that off, or "
+                                                             "[terrain.stream] enabled = false"});
+        return errors;
+    }
     TerrainSettings wanted = s.terrain;
     wanted.heightmap = resolveInput(s.terrain.heightmap).string();
     wanted.dem = resolveInput(s.terrain.dem).string();
+    if (!s.terrain.stream.cache.empty()) wanted.stream.cache = resolveInput(s.terrain.stream.cache).string();
     wanted = resolveMaterialPaths(std::move(wanted), resolveInput);
     bool same = terrain_ ? terrain_->matches(wanted) : terrain_failed_ && terrain_source_.heightmap == wanted.heightmap &&
                                                            terrain_source_.dem == wanted.dem && terrain_source_.grid == wanted.grid &&
@@ -602,6 +611,17 @@ void FrameRenderer::addGeometryPasses(FrameGraph& graph, const Frame& f, const C
             report.counters["terrain.tess_shadow_patches"] = double(c.tess_shadow_patches);
         }
         report.counters["terrain.select_ms"] = c.select_ms;
+        // [terrain.stream] (absent when off): pool pages holding a tile, tiles wanted but missing
+        // (queued), uploaded and evicted this frame, nodes drawn from a coarser tile, and the
+        // largest screen error (px) that adds.
+        if (terrain_->streamed()) {
+            report.counters["terrain.stream.resident"] = double(c.stream.resident);
+            report.counters["terrain.stream.requested"] = double(c.stream.requested);
+            report.counters["terrain.stream.loaded"] = double(c.stream.loaded);
+            report.counters["terrain.stream.evicted"] = double(c.stream.evicted);
+            report.counters["terrain.stream.missing"] = double(c.stream.missing);
+            report.counters["terrain.stream.missing_error_px"] = c.stream.missing_error_px;
+        }
     }
     if (casters.blades.valid()) grass_->addGbufferPass(graph, f.rc, s.grass, casters.blades, scene);
     if (casters.object_lists.valid()) objects_->addGbufferPass(graph, f.rc, s.objects, casters.object_lists, scene);

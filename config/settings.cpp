@@ -146,6 +146,21 @@ void describe(SettingsVisitor& v, TerrainSettings& s) {
     v.field({"edge_px", "px", "target length of a tessellated edge on screen"}, t.edge_px, 1.0f, 64.0f);
     v.field({"max_factor", "", "largest subdivision of an edge"}, t.max_factor, 1.0f, 32.0f);
     v.field({"depth_m", "m", "depth of relief height 0 below the drawn surface"}, t.depth_m, 0.001f, 1.0f);
+    TerrainStreamSettings& st = s.stream;
+    v.section("terrain.stream", "draw the terrain from its tile cache through a fixed GPU page pool, loaded by worker "
+                                "threads, without the whole map in memory (docs/dem.md)");
+    v.field({"enabled", "", "stream from the tile cache (built first when missing or stale; its tile must equal [terrain] "
+                            "grid); not with grass, rain splashes or tessellation, which read the whole map"},
+            st.enabled);
+    v.field({"cache", "", "tile cache file (vista terrain-cache --tile GRID); empty: the heightmap's or DEM's path + .vtc"},
+            st.cache);
+    v.field({"pool_pages", "tiles", "tiles the GPU page pool holds (heights and normals; the coarsest levels stay)"},
+            st.pool_pages, 16, 65536);
+    v.field({"uploads_per_frame", "tiles", "finished tile loads uploaded per frame at most"}, st.uploads_per_frame, 1, 4096);
+    v.field({"threads", "", "worker threads reading tiles"}, st.threads, 1, 16);
+    v.field({"prefetch_frames", "frames", "also request the tiles the camera will need this many frames ahead, moving as "
+                                          "it did over the last frame (0: none)"},
+            st.prefetch_frames, 0, 600);
     for (TerrainMaterialSettings& m : s.materials) {
         v.section(m.section.c_str(), "a user material: images of one square power-of-two size; NAME sand, grass, rock, "
                                      "snow or dirt replaces that layer, any other adds one (docs/terrain-materials.md)");

@@ -92,6 +92,17 @@ struct TerrainTessSettings {
     float depth_m = 0.1f;             //!< m, depth of relief height 0 below the drawn surface, 0.001..1
 };
 
+//! Streaming from a tile cache ([terrain.stream], terrain/tile_stream.h, docs/dem.md): the map is
+//! never held whole; a fixed GPU page pool is filled by worker threads from `vista terrain-cache`'s file.
+struct TerrainStreamSettings {
+    bool enabled = false;             //!< draw from the tile cache (built first when missing or stale)
+    std::string cache;                //!< tile cache file (empty: the heightmap's or DEM's path + .vtc)
+    int pool_pages = 2048;            //!< tiles the GPU pool holds (heights + normals), 16..65536
+    int uploads_per_frame = 64;       //!< finished tile loads uploaded per frame at most, 1..4096
+    int threads = 2;                  //!< worker threads reading tiles, 1..16
+    int prefetch_frames = 30;         //!< frames: tiles the camera will need this many frames ahead (at its last frame's motion) are requested too, 0..600
+};
+
 //! A user material ([terrain.material.NAME], terrain/user_materials.h): image files read with
 //! OpenImageIO, all of one square power-of-two size. NAME sand, grass, rock, snow or dirt replaces
 //! that generated layer; any other NAME adds a layer that only a splat map places.
@@ -144,6 +155,7 @@ struct TerrainSettings {
     std::string splat_layers;         //!< layer names, one per splat channel (empty: the user materials in file order)
     TerrainPomSettings pom;           //!< [terrain.pom]
     TerrainTessSettings tessellation; //!< [terrain.tessellation]
+    TerrainStreamSettings stream;     //!< [terrain.stream]
     std::vector<TerrainMaterialSettings> materials;  //!< [terrain.material.NAME] sections, in file order
 };
 

@@ -14,6 +14,7 @@ constexpr int kTex3 = 3;
 constexpr int kTex4 = 4;
 constexpr int kTex5 = 5;
 constexpr int kTerrainNodes = 1;   // shader storage: selected terrain node instances
+constexpr int kTerrainPages = 16;  // shader storage: the streamed terrain's page table (terrain/tile_stream.h)
 constexpr int kLightGrid = 1;      // uniform block: LightGrid (renderer/lighting/shaders/lights.glsl)
 constexpr int kLights = 2;         // shader storage: local lights
 constexpr int kLightCells = 3;     // shader storage: per tile / cluster (offset, count)

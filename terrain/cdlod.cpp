@@ -167,6 +167,46 @@ MinMaxQuadtree::MinMaxQuadtree(const Heightmap& map, const TerrainMapping& mappi
                 }
             levels_[0][std::size_t(z) * std::size_t(c0.x) + std::size_t(x)] = mm;
         }
+    buildParents();
+    // Samples to metres (a negative scale swaps min and max) and the per-level spans.
+    span_.resize(levels_.size());
+    for (std::size_t level = 0; level < levels_.size(); ++level) {
+        double span = 0.0;
+        for (glm::vec2& mm : levels_[level]) {
+            double a = mapping.height_offset_m + mapping.height_scale_m * double(mm.x);
+            double b = mapping.height_offset_m + mapping.height_scale_m * double(mm.y);
+            mm = glm::vec2(floatBelow(std::min(a, b)), floatAbove(std::max(a, b)));
+            span = std::max(span, double(mm.y) - double(mm.x));
+        }
+        span_[level] = span;
+    }
+}
+
+MinMaxQuadtree::MinMaxQuadtree(const TerrainMapping& mapping, int leaf_texels, std::vector<glm::vec2> leaves_m)
+    : leaf_texels_(std::max(leaf_texels, 1)) {
+    const int w = mapping.width, h = mapping.height;
+    if (w < 2 || h < 2) return;
+    for (int level = 0;; ++level) {
+        std::int64_t n = std::int64_t(leaf_texels_) << level;
+        per_side_.push_back({ceilDiv(w - 1, n), ceilDiv(h - 1, n)});
+        if (per_side_.back() == glm::ivec2(1)) break;
+    }
+    if (leaves_m.size() != std::size_t(per_side_[0].x) * std::size_t(per_side_[0].y)) {
+        per_side_.clear();
+        return;
+    }
+    levels_.resize(per_side_.size());
+    levels_[0] = std::move(leaves_m);
+    buildParents();
+    span_.resize(levels_.size());
+    for (std::size_t level = 0; level < levels_.size(); ++level) {
+        double span = 0.0;
+        for (const glm::vec2& mm : levels_[level]) span = std::max(span, double(mm.y) - double(mm.x));
+        span_[level] = span;
+    }
+}
+
+void MinMaxQuadtree::buildParents() {
     // Parents from their (up to 4) children: the union of the children's texel ranges.
     for (std::size_t level = 1; level < levels_.size(); ++level) {
         glm::ivec2 c = per_side_[level], cc = per_side_[level - 1];
@@ -183,18 +223,6 @@ MinMaxQuadtree::MinMaxQuadtree(const Heightmap& map, const TerrainMapping& mappi
                     }
                 node[std::size_t(z) * std::size_t(c.x) + std::size_t(x)] = mm;
             }
-    }
-    // Samples to metres (a negative scale swaps min and max) and the per-level spans.
-    span_.resize(levels_.size());
-    for (std::size_t level = 0; level < levels_.size(); ++level) {
-        double span = 0.0;
-        for (glm::vec2& mm : levels_[level]) {
-            double a = mapping.height_offset_m + mapping.height_scale_m * double(mm.x);
-            double b = mapping.height_offset_m + mapping.height_scale_m * double(mm.y);
-            mm = glm::vec2(floatBelow(std::min(a, b)), floatAbove(std::max(a, b)));
-            span = std::max(span, double(mm.y) - double(mm.x));
-        }
-        span_[level] = span;
     }
 }
 

@@ -43,6 +43,10 @@ class MinMaxQuadtree {
 public:
     MinMaxQuadtree() = default;
     MinMaxQuadtree(const Heightmap& map, const TerrainMapping& mapping, int leaf_texels);
+    // From the leaves' min/max heights (m; row-major, ceil((width - 1) / leaf_texels) x
+    // ceil((height - 1) / leaf_texels) of them, as a tile cache's level 0 with tile = leaf_texels
+    // keeps them), without the map: the parents are the unions of their children, as above.
+    MinMaxQuadtree(const TerrainMapping& mapping, int leaf_texels, std::vector<glm::vec2> leaves_m);
 
     int levels() const { return int(levels_.size()); }  // level 0 = leaves
     int leafTexels() const { return leaf_texels_; }
@@ -58,6 +62,7 @@ public:
     std::size_t memoryBytes() const;
 
 private:
+    void buildParents();  // levels 1.. from level 0 (per_side_ set)
     int leaf_texels_ = 0;
     std::vector<glm::ivec2> per_side_;
     std::vector<double> span_;

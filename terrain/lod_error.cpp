@@ -87,6 +87,13 @@ GridErrors::GridErrors(const Heightmap& map, const TerrainMapping& mapping, int 
     }
 }
 
+GridErrors::GridErrors(glm::ivec2 cells, std::vector<std::vector<float>> levels_m)
+    : cells_(cells), levels_(std::move(levels_m)) {
+    max_.assign(levels_.size(), 0.0f);
+    for (std::size_t level = 0; level < levels_.size(); ++level)
+        for (float e : levels_[level]) max_[level] = std::max(max_[level], e);
+}
+
 std::size_t GridErrors::memoryBytes() const {
     std::size_t bytes = max_.capacity() * sizeof(float) + levels_.capacity() * sizeof(std::vector<float>);
     for (const std::vector<float>& level : levels_) bytes += level.capacity() * sizeof(float);

@@ -45,6 +45,9 @@ public:
     GridErrors() = default;
     // levels: as many as the quadtree has (level 0, the full-resolution grid, has no error).
     GridErrors(const Heightmap& map, const TerrainMapping& mapping, int leaf_texels, int levels);
+    // Given per level, per leaf cell (row-major, cells.x * cells.y each; m): a tile cache's
+    // bounds (terrain/tile_stream.h), which are at least the exact errors above.
+    GridErrors(glm::ivec2 cells, std::vector<std::vector<float>> levels_m);
 
     int levels() const { return int(levels_.size()); }
     glm::ivec2 cells() const { return cells_; }

@@ -3,6 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "terrain/dem.h"
+#include "terrain/tile_cache.h"
 #include "terrain/materials.h"
 #include "terrain/tess_displacement.h"
 #include "terrain/user_materials.h"
@@ -81,6 +82,8 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
     defines.push_back("MATERIAL_LAYERS=" + std::to_string(kMaxMaterialLayers));
     // Splat maps place the layers instead of the height/slope rules (user_materials.h).
     for (std::string& d : splatDefines(s)) defines.push_back(std::move(d));
+    // Heights and normals through the page table of the streamed pool (terrain/tile_stream.h).
+    if (s.stream.enabled) defines.push_back("TERRAIN_STREAM");
     return defines;
 }
 
@@ -107,11 +110,17 @@ int materialTier(const TerrainSettings& s, double distance_m) {
     return 2;
 }
 
+std::vector<std::string> Terrain::shadowDefines() const {
+    if (stream_) return {"SHADOW_PASS", "TERRAIN_STREAM"};
+    return {"SHADOW_PASS"};
+}
+
 ProgramList terrainPrograms() {
     ProgramList programs;
-    for (bool wireframe : {false, true}) {
+    for (int variant = 0; variant < 4; ++variant) {
         TerrainSettings s;
-        s.wireframe = wireframe;
+        s.wireframe = (variant & 1) != 0;
+        s.stream.enabled = (variant & 2) != 0;
         for (int tier = 0; tier < kMaterialTiers; ++tier) programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, tier)});
         s.pom.enabled = true;
         programs.push_back({"terrain/shaders/terrain.glsl", terrainDefines(s, 0)});
@@ -135,6 +144,7 @@ ProgramList terrainPrograms() {
         }
     }
     programs.push_back({"terrain/shaders/terrain.glsl", {"SHADOW_PASS"}});
+    programs.push_back({"terrain/shaders/terrain.glsl", {"SHADOW_PASS", "TERRAIN_STREAM"}});
     for (TerrainView view : {TerrainView::Shaded, TerrainView::Normals}) {
         TerrainSettings s;
         s.view = view;
@@ -179,6 +189,7 @@ Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors, Te
 }
 
 std::unique_ptr<Terrain> Terrain::load(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    if (s.stream.enabled) return loadStreamed(s, shaders, errors);
     TerrainMapping mapping;
     Heightmap map = loadChecked(s, errors, &mapping);
     if (map.samples.empty()) return nullptr;
@@ -257,8 +268,13 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMappi
         return nullptr;
     }
 
-    MaterialSet set = loadMaterialSet(s, map.width, map.height, errors);
-    if (set.images.layers == 0) return nullptr;
+    return finishCreate(*t, s, shaders, errors) ? std::move(t) : nullptr;
+}
+
+bool Terrain::finishCreate(Terrain& terrain, const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    Terrain* t = &terrain;
+    MaterialSet set = loadMaterialSet(s, t->mapping_.width, t->mapping_.height, errors);
+    if (set.images.layers == 0) return false;
     const MaterialImages& materials = set.images;
     t->layer_count_ = materials.layers;
     std::copy(set.repeat_m.begin(), set.repeat_m.end(), t->layer_repeat_m_.begin());
@@ -311,11 +327,91 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMappi
     t->instance_buffer_ = gl::Buffer::create(GLsizeiptr(kMaxInstances * sizeof(TerrainInstance)), nullptr,
                                              GL_DYNAMIC_STORAGE_BIT, "terrain instances");
     t->instances_.reserve(kMaxInstances);
-    return t;
+    return true;
+}
+
+std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    if (!checkGrid(s.grid, errors)) return nullptr;
+    if (s.tessellation.enabled) {
+        errors.push_back({"[terrain.stream] enabled", 0, "streaming does not work with [terrain.tessellation] enabled (its "
+                                                         "displacement reads the full-resolution map); accepted: one of them"});
+        return nullptr;
+    }
+    const std::string input = s.dem.empty() ? s.heightmap : s.dem;
+    const std::filesystem::path file = s.stream.cache.empty() ? defaultTileCachePath(input) : std::filesystem::path(s.stream.cache);
+    // A cache built from this input (when the input is there to compare) is used if it has tiles
+    // of the grid's size and, for a heightmap, the settings' mapping; a missing or stale one is
+    // built now, from the map loaded once (then dropped).
+    TileCacheKey key;
+    const bool have_input = tileCacheKey(input, key).empty();
+    std::string why;
+    std::unique_ptr<TileCache> cache = TileCache::open(file, why);
+    if (cache && !(have_input && !(cache->key() == key))) {
+        // Up to date, but made for other settings: refused rather than replaced (it may be a user's).
+        const TerrainMapping& m = cache->mapping();
+        std::string wrong;
+        if (cache->tileSize() != s.grid)
+            wrong = "tiles of " + std::to_string(cache->tileSize()) + " samples, and [terrain] grid = " + std::to_string(s.grid) +
+                    " needs tiles of the grid's size (vista terrain-cache --tile " + std::to_string(s.grid) + " --force)";
+        else if (s.dem.empty() && (m.sizeX() != double(s.size_m) || m.sizeZ() != double(s.size_m) ||
+                                   m.height_scale_m != double(s.height_scale_m) || m.height_offset_m != double(s.height_offset_m)))
+            wrong = "another size_m or height scale/offset than [terrain]'s (rebuild it with vista terrain-cache --size-m, "
+                    "--height-scale-m, --height-offset-m, --force)";
+        if (!wrong.empty()) {
+            errors.push_back({file.string(), 0, "the tile cache has " + wrong});
+            return nullptr;
+        }
+    }
+    if (!cache || (have_input && !(cache->key() == key))) {
+        if (!have_input) {
+            errors.push_back({file.string(), 0, why + "; and its input " + input + " cannot be read to build it"});
+            return nullptr;
+        }
+        cache.reset();
+        TerrainMapping mapping;
+        Heightmap map = loadChecked(s, errors, &mapping);
+        if (map.samples.empty()) return nullptr;
+        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s\n", file.string().c_str(), s.grid, input.c_str());
+        if (std::string e = buildTileCache(map, mapping, key, s.grid, file, true); !e.empty()) {
+            errors.push_back({file.string(), 0, e});
+            return nullptr;
+        }
+        cache = TileCache::open(file, why);
+        if (!cache) {
+            errors.push_back({file.string(), 0, why});
+            return nullptr;
+        }
+    }
+    std::unique_ptr<Terrain> t(new Terrain);
+    t->source_ = s;
+    t->mapping_ = cache->mapping();
+    t->stream_ = TileStream::open(std::move(cache), s.stream.pool_pages, s.stream.threads, why);
+    if (!t->stream_) {
+        errors.push_back({"[terrain.stream] pool_pages", 0, why});
+        return nullptr;
+    }
+    t->tree_ = t->stream_->quadtree();
+    t->errors_ = t->stream_->gridErrors(t->tree_.levels());
+    if (t->tree_.levels() == 0) {
+        errors.push_back({file.string(), 0, "the tile cache's index does not match its map size"});
+        return nullptr;
+    }
+    // The tile uniforms carry the map's size (material.glsl, the bias field); no tiles of heights.
+    t->tiles_.count = {1, 1};
+    t->tiles_.span = t->mapping_.width;
+    t->tiles_.layer = {t->mapping_.width, t->mapping_.height};
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        errors.push_back({file.string(), 0, "the GL could not hold the terrain's page pool (" +
+                                                std::to_string(s.stream.pool_pages) + " pages), GL error " + std::to_string(e)});
+        return nullptr;
+    }
+    return finishCreate(*t, s, shaders, errors) ? std::move(t) : nullptr;
 }
 
 bool Terrain::matches(const TerrainSettings& s) const {
-    return s.heightmap == source_.heightmap && s.raw_width == source_.raw_width && s.raw_height == source_.raw_height &&
+    return s.stream.enabled == source_.stream.enabled && s.stream.cache == source_.stream.cache &&
+           s.stream.pool_pages == source_.stream.pool_pages && s.stream.threads == source_.stream.threads &&
+           s.heightmap == source_.heightmap && s.raw_width == source_.raw_width && s.raw_height == source_.raw_height &&
            s.size_m == source_.size_m && s.height_scale_m == source_.height_scale_m &&
            s.height_offset_m == source_.height_offset_m && s.grid == source_.grid && s.dem == source_.dem &&
            s.dem_nodata == source_.dem_nodata && s.dem_vertical_scale == source_.dem_vertical_scale &&
@@ -328,7 +424,53 @@ double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, cons
     return origin.y + mapping.height_offset_m + mapping.height_scale_m * map.sample(tx, tz);
 }
 
-double Terrain::heightAt(double x, double z) const { return terrainHeightAt(map_, mapping_, source_.origin, x, z); }
+double Terrain::heightAt(double x, double z) const {
+    if (!stream_) return terrainHeightAt(map_, mapping_, source_.origin, x, z);
+    const glm::dvec3& o = source_.origin;
+    const double tx = (x - o.x + mapping_.sizeX() * 0.5) / mapping_.texelSizeX();
+    const double tz = (z - o.z + mapping_.sizeZ() * 0.5) / mapping_.texelSizeZ();
+    return o.y + mapping_.height_offset_m + mapping_.height_scale_m * stream_->sample(tx, tz);
+}
+
+void Terrain::updateStream(const TerrainSettings& s, const Selection& drawn) {
+    TileStream& st = *stream_;
+    st.beginFrame();
+    // A node at LOD level L draws tile (L, x, z) of the cache (tile = grid: one node, one tile);
+    // a quadrant of a level-L node (node_level L - 1) lies in its parent's tile.
+    auto wantNodes = [&](const Selection& sel) {
+        for (const SelectedNode& n : sel.nodes) {
+            const int shift = n.level - n.node_level;
+            st.want(n.level, n.x >> shift, n.z >> shift);
+        }
+    };
+    wantNodes(selection_);  // the view's nodes and the shadow casters' beyond it
+    // Prefetch: the selection of the camera moved on by its last frame's motion, prefetch_frames times.
+    const glm::dvec3 camera = camera_ - s.origin;
+    if (have_last_camera_ && s.stream.prefetch_frames > 0) {
+        const glm::dvec3 ahead = camera + (camera - last_camera_) * double(s.stream.prefetch_frames);
+        if (ahead != camera) {
+            selectNodes(tree_, mapping_, lod_, ahead, frusta_, prefetch_, s.lod_metric == LodMetric::Error ? &bias_ : nullptr);
+            wantNodes(prefetch_);
+        }
+    }
+    last_camera_ = camera;
+    have_last_camera_ = true;
+    st.endFrame(s.stream.uploads_per_frame);
+    // What missing tiles cost: a node drawn at its ancestor's level A errs by up to that tile's
+    // grid error (m), seen from the node's nearest point.
+    StreamCounters& c = st.counters();
+    for (const SelectedNode& n : drawn.nodes) {
+        const int shift = n.level - n.node_level;
+        const int tx = n.x >> shift, tz = n.z >> shift;
+        const int level = st.residentLevel(n.level, tx, tz);
+        if (level == n.level) continue;
+        ++c.missing;
+        const TileCache::Entry& e = st.cache().entry(level, tx >> (level - n.level), tz >> (level - n.level));
+        const glm::dvec3 p = glm::clamp(glm::dvec3(0.0), n.min_rel, n.max_rel);
+        c.missing_error_px = std::max(c.missing_error_px, double(e.error_m) * error_scale_ / std::max(glm::length(p), 1e-3));
+    }
+    counters_.stream = c;
+}
 
 const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& view_proj, const TerrainSettings& s,
                                 double error_scale, const Frustum* caster_frustum, std::span<const Frustum> extra) {
@@ -381,6 +523,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     counters_.tess_patches = std::int64_t(tess_count_) * (index_count_ / 3);
     counters_.tess_shadow_patches = 0;  // shadowInstances() adds the shadow passes' patches
     counters_.base_range_m = selection_.ranges.empty() ? 0.0 : selection_.ranges[0];
+    if (stream_) updateStream(s, *drawn);
     counters_.select_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return selection_;
 }
@@ -473,8 +616,8 @@ void Terrain::bindSplat(GLuint program, GLint location) const {
 
 void Terrain::bindTiles(GLuint program, GLint location) const {
     glProgramUniform4i(program, location, tiles_.count.x, tiles_.count.y, tiles_.span, 0);
-    glProgramUniform4f(program, location + 1, float(tiles_.layer.x), float(tiles_.layer.y), float(map_.width),
-                       float(map_.height));
+    glProgramUniform4f(program, location + 1, float(tiles_.layer.x), float(tiles_.layer.y), float(mapping_.width),
+                       float(mapping_.height));
 }
 
 void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
@@ -494,7 +637,12 @@ void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
                        s.lod_metric == LodMetric::Error ? 1 : 0);
     glProgramUniform1i(program, 25, 0);  // first instance: the whole bound range
     glBindTextureUnit(binding::kTex4, bias_texture_.id());
-    glBindTextureUnit(binding::kTex0, height_.id());
+    if (stream_) {
+        glBindTextureUnit(binding::kTex0, stream_->heightPages());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainPages, stream_->pageTable());
+    } else {
+        glBindTextureUnit(binding::kTex0, height_.id());
+    }
     glBindVertexArray(vao_.id());
 }
 
@@ -529,7 +677,7 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
         anisotropy_ = aniso;  // a texture parameter, so set on change only
         for (const gl::Texture* t : {&albedo_, &detail_}) glTextureParameterf(t->id(), kTextureMaxAnisotropy, aniso);
     }
-    glBindTextureUnit(binding::kTex1, normals_.id());
+    glBindTextureUnit(binding::kTex1, stream_ ? stream_->normalPages() : normals_.id());
     glBindTextureUnit(binding::kTex2, albedo_.id());
     glBindTextureUnit(binding::kTex3, detail_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
@@ -665,6 +813,10 @@ void Terrain::drawBounds(GLuint program) {
 }
 
 std::size_t Terrain::memoryBytes() const {
+    if (stream_)
+        return tree_.memoryBytes() + errors_.memoryBytes() + bias_.memoryBytes() + bias_.corners().size() * sizeof(float) +
+               stream_->memoryBytes() + std::size_t(grid_indices_.size()) + std::size_t(instance_buffer_.size()) +
+               std::size_t(bounds_buffer_.size()) + std::size_t(shadow_instances_.size());
     std::size_t texels = std::size_t(tiles_.layer.x) * std::size_t(tiles_.layer.y) * std::size_t(tiles_.count.x * tiles_.count.y);
     return tree_.memoryBytes() + errors_.memoryBytes() + bias_.memoryBytes() + bias_.corners().size() * sizeof(float) /* its texture */ +
            map_.samples.size() * sizeof(float) + texels * 4 /* R32F */ + texels * 4 /* normals */ +
@@ -677,7 +829,7 @@ std::size_t Terrain::gpuMemoryBytes() const {
     for (const gl::Texture* t : {&height_, &normals_, &albedo_, &detail_, &bias_texture_, &splat_}) bytes += t->bytes();
     for (const gl::Buffer* b : {&grid_indices_, &instance_buffer_, &bounds_buffer_, &shadow_instances_})
         bytes += std::size_t(b->size());
-    return bytes;
+    return bytes + (stream_ ? stream_->gpuMemoryBytes() : 0);
 }
 
 void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& s,

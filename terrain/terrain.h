@@ -12,6 +12,7 @@
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
 #include "terrain/tess_displacement.h"
+#include "terrain/tile_stream.h"
 #include "terrain/user_materials.h"
 
 #include <array>
@@ -32,6 +33,7 @@ struct TerrainCounters {
     double base_range_m = 0.0;  // LOD 0 range in use (after the node-size and error bounds)
     std::int64_t tess_patches = 0;  // grid triangles drawn as tessellation patches ([terrain.tessellation])
     std::int64_t tess_shadow_patches = 0;  // the same in shadow passes (sun cascades, spot tiles, point cube faces)
+    StreamCounters stream;  // [terrain.stream]: tiles resident, requested, loaded, evicted, missing (zero when not streaming)
 };
 
 // One quadrant of a node at its LOD level: what the shader draws per instance.
@@ -69,6 +71,14 @@ public:
     // Same with the mapping given (a DEM's, terrain/dem.h) rather than taken from s.
     static std::unique_ptr<Terrain> create(Heightmap map, const TerrainMapping& mapping, const TerrainSettings& s,
                                            ShaderLibrary& shaders, InputErrors& errors, int max_texture = 0);
+
+    // With [terrain.stream]: from the tile cache (built from the input first when missing or
+    // stale), through a GPU page pool (terrain/tile_stream.h); the map is not kept.
+    static std::unique_ptr<Terrain> loadStreamed(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
+    bool streamed() const { return stream_ != nullptr; }
+    TileStream* stream() { return stream_.get(); }
+    // The depth-only program's defines (terrain.glsl SHADOW_PASS; TERRAIN_STREAM when streamed).
+    std::vector<std::string> shadowDefines() const;
 
     // True when s names the same data and mapping (no reload needed).
     bool matches(const TerrainSettings& s) const;
@@ -158,6 +168,11 @@ public:
 
 private:
     Terrain() = default;
+    // What create() and loadStreamed() share after the heights: materials, bias, grid, buffers.
+    static bool finishCreate(Terrain& t, const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors);
+    // Streaming: requests the tiles of the selection (and of the camera's predicted selection),
+    // uploads, and counts what is drawn from coarser tiles.
+    void updateStream(const TerrainSettings& s, const Selection& drawn);
     // Appends the draw instances (quadrants) of nodes to out, at most kMaxInstances in all;
     // with tiers, the nearest distance (m) from the camera to each quadrant's box goes there too.
     void appendInstances(const std::vector<SelectedNode>& nodes, std::vector<TerrainInstance>& out,
@@ -207,6 +222,11 @@ private:
     ShaderLibrary* shaders_ = nullptr;  // for the tessellated shadow program
     float max_anisotropy_ = 1.0f;  // the GL's limit (1 without the extension)
     float anisotropy_ = 1.0f;      // what the material textures are set to
+
+    std::unique_ptr<TileStream> stream_;
+    Selection prefetch_;              // scratch: the predicted camera's selection
+    glm::dvec3 last_camera_{0.0};
+    bool have_last_camera_ = false;
 
     TerrainTiles tiles_;
     gl::Texture height_, normals_, albedo_, detail_, bias_texture_, splat_;

@@ -79,6 +79,8 @@ public:
     bool read(int level, int tx, int tz, CacheTile& out, std::string& why) const;
     // Bytes held in memory: the index only.
     std::size_t memoryBytes() const;
+    // The file this reader reads.
+    const std::filesystem::path& file() const { return file_; }
 
     // One tile's place in the file and what the index keeps of it.
     struct Entry {
@@ -87,6 +89,8 @@ public:
         float min_m = 0, max_m = 0, error_m = 0;
         std::uint32_t pad = 0;
     };
+    // What the index keeps of tile (tx, tz) of a level (min/max, error, size), without reading it.
+    const Entry& entry(int level, int tx, int tz) const { return entries_[index(level, tx, tz)]; }
 
 private:
     TileCache() = default;

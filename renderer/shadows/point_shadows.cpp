@@ -178,7 +178,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDepthFunc(GL_GREATER);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
+            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
             glUseProgram(program);
             terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);

@@ -198,7 +198,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glEnable(GL_SCISSOR_TEST);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.spot_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
+            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
             glUseProgram(program);
             auto bindTile = [&](std::size_t k) {
                 const int x = int(k) % tiles_per_side_ * tile, y = int(k) / tiles_per_side_ * tile;

@@ -238,7 +238,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_DEPTH_CLAMP);  // casters between the box and the sun land on depth 0
                 glEnable(GL_POLYGON_OFFSET_FILL);
                 glPolygonOffset(settings_.slope_bias, 0.0f);
-                GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", {"SHADOW_PASS"});
+                GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
                 glUseProgram(program);
                 glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);

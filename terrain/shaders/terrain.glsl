@@ -27,10 +27,18 @@ layout(location = 12) uniform ivec4 u_bias_cells;  // leaf cells in x, z; texels
 layout(location = 13) uniform float u_max_error_px;  // the LOD's screen error bound (error view)
 layout(location = 25) uniform int u_first_instance;  // this draw's first entry in u_instances (one draw per tier)
 
+#ifdef TERRAIN_STREAM
+// Streamed (terrain/tile_stream.h): the finest resident level's surface (bilinear) stands in for
+// the full-resolution one; heights and normals come through the page table (tiles.glsl).
+float surfaceSample(vec2 t) {
+    return textureLod(u_height, streamCoord(t, 0), 0.0).r;
+}
+#else
 // The full-resolution terrain surface at texel coordinates t (tiles.glsl).
 float surfaceSample(vec2 t) {
     return tileSurfaceSample(u_height, t, u_tiles, u_tile_layer);
 }
+#endif
 
 #ifdef VERTEX_SHADER
 #ifdef TERRAIN_TESS
@@ -60,8 +68,13 @@ vec2 texelAt(vec2 rel_xz) {
     return (rel_xz - u_map_min) / u_texel_m;
 }
 
+int g_level = 0;  // the instance's LOD level (streamed: the pyramid level its heights come from)
 float heightSample(vec2 texel) {
+#ifdef TERRAIN_STREAM
+    return textureLod(u_height, streamCoord(texel, g_level), 0.0).r;
+#else
     return textureLod(u_height, tileCoord(texel, u_tiles, u_tile_layer), 0.0).r;
+#endif
 }
 
 layout(binding = BINDING_TEX_4) uniform sampler2D u_bias;  // distance bias (m) at leaf-cell corners
@@ -85,6 +98,7 @@ float distanceBias(vec2 t) {
 
 void main() {
     Instance inst = u_instances[u_first_instance + gl_InstanceID];
+    g_level = int(inst.a.w);
     int side = u_quads + 1;
     vec2 grid = vec2(gl_VertexID % side, gl_VertexID / side);
     vec2 step_m = vec2(inst.a.z, inst.b.z);
@@ -163,6 +177,16 @@ in float v_sample;
 #endif
 in vec2 v_grid;
 flat in vec2 v_lod;
+
+// Where the normal at texel coordinates t is: the full map's tiles, or (streamed) the page of the
+// finest resident level at or above the instance's.
+vec3 normalCoord(vec2 t) {
+#ifdef TERRAIN_STREAM
+    return streamCoord(t, int(v_lod.x + 0.5));
+#else
+    return tileCoord(t, u_tiles, u_tile_layer);
+#endif
+}
 in float v_morph;
 layout(location = 0) out vec4 o_color;   // emissive radiance (0 when lit); error view: alpha = px
 layout(location = 1) out vec4 o_albedo;  // G-buffer albedo, roughness
@@ -228,7 +252,7 @@ int materialId(vec3 n) {
 
 #ifdef TERRAIN_VIEW
 void main() {
-    vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
+    vec3 n = safeNormalize(texture(u_normals, normalCoord(v_texel)).xyz);
     float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
     // Debug views are unlit: their colour goes to the HDR target, the G-buffer says "unlit".
     o_albedo = vec4(0.0);
@@ -338,7 +362,7 @@ float pomHeight(vec3 p) {
 #endif
 
 void main() {
-    vec3 n = safeNormalize(texture(u_normals, tileCoord(v_texel, u_tiles, u_tile_layer)).xyz);
+    vec3 n = safeNormalize(texture(u_normals, normalCoord(v_texel)).xyz);
     float dist = length(v_rel);
     float wire = wireframe();  // here, in uniform control flow (it takes derivatives)
     vec2 world_xz = v_rel.xz + u_tex_offset;

@@ -18,6 +18,7 @@ TEST_CASE("bindings: C++ constants match renderer/shaders/bindings.glsl") {
     CHECK(binding::kTex4 == BINDING_TEX_4);
     CHECK(binding::kTex5 == BINDING_TEX_5);
     CHECK(binding::kTerrainNodes == BINDING_TERRAIN_NODES);
+    CHECK(binding::kTerrainPages == BINDING_TERRAIN_PAGES);
     CHECK(binding::kLightGrid == BINDING_LIGHT_GRID);
     CHECK(binding::kLights == BINDING_LIGHTS);
     CHECK(binding::kLightCells == BINDING_LIGHT_CELLS);

@@ -1,0 +1,182 @@
+// Terrain streaming ([terrain.stream], terrain/tile_stream.h): a 1025^2 island drawn from its tile
+// cache (built on first load) through the GPU page pool. Once the tiles settle the image matches
+// the in-memory terrain's; the first frame, drawn from the coarsest levels only, does not (so the
+// comparison can fail) but has no hole. A slow disk (a test hook) never shows a hole along a fast
+// flight; a tiny pool evicts and stays consistent (hierarchy, page table on the GPU).
+#include "renderer_fixture.h"
+#include "app/image_metrics.h"
+#include "terrain/tile_cache.h"
+#include "terrain/tile_stream.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+using namespace vista;
+
+namespace {
+
+FrameRenderer& renderer() { return test::fileRenderer(); }
+
+const std::filesystem::path& islandFile() {
+    static test::TempDir dir("terrain-stream");
+    static std::filesystem::path file = [] {
+        std::filesystem::path f = dir.path / "island.png";
+        REQUIRE(saveHeightmapPng16(f, generateIsland(IslandParams{1025, 7})).empty());
+        return f;
+    }();
+    return file;
+}
+
+Settings islandScene(bool stream, int pool_pages = 2048) {
+    Settings s;
+    test::terrainOnly(s);
+    s.sky.enabled = false;  // uncovered pixels keep alpha 0: holes can be counted
+    s.terrain.heightmap = islandFile().string();
+    s.terrain.size_m = 4096.0f;
+    s.terrain.height_scale_m = 600.0f;
+    s.terrain.stream.enabled = stream;
+    s.terrain.stream.cache = (islandFile().parent_path() / "island.vtc").string();
+    s.terrain.stream.pool_pages = pool_pages;
+    s.terrain.stream.prefetch_frames = 0;
+    return s;
+}
+
+struct Frame {
+    std::vector<float> rgba;
+    int holes = 0;
+    std::map<std::string, double> counters;
+};
+
+Frame render(const Settings& s, const ViewParams& view) {
+    REQUIRE(renderer().prepare(s).empty());
+    renderer().resetHistory();
+    test::RenderedFrame r = test::renderFrame(renderer(), s, view);
+    Frame f;
+    f.rgba = std::move(r.rgba);
+    for (std::size_t i = 3; i < f.rgba.size(); i += 4) f.holes += f.rgba[i] == 0.0f;
+    f.counters = r.report.counters;
+    return f;
+}
+
+// PSNR (dB) of b against a over RGB, the peak the reference's brightest channel.
+double psnr(const Frame& a, const Frame& b) {
+    double peak = 0.0, mse = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        if (i % 4 != 3) {
+            peak = std::max(peak, double(a.rgba[i]));
+            mse += (double(a.rgba[i]) - double(b.rgba[i])) * (double(a.rgba[i]) - double(b.rgba[i]));
+            ++n;
+        }
+    return psnrFromMse(mse / double(std::max<std::size_t>(n, 1)), std::max(peak, 1e-6));
+}
+
+// Looking down at the island from 700 m: the map (sea floor included) fills the view.
+ViewParams overview() { return ViewParams{{0.0, 700.0, 0.0}, 30.0, -60.0, 60.0, 0.5, 160, 90}; }
+
+}  // namespace
+
+TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settle, and never shows a hole before") {
+    TileStream::setReadDelayForTests(0);
+    const Frame memory = render(islandScene(false), overview());
+    REQUIRE(memory.holes == 0);
+    const MinMaxQuadtree tree = renderer().terrain()->quadtree();
+
+    const Settings s = islandScene(true);
+    const Frame first = render(s, overview());  // builds the cache, opens the pool: coarsest levels only
+    Terrain* t = renderer().terrain();
+    REQUIRE(t);
+    REQUIRE(t->streamed());
+    CHECK(t->heightmap().samples.empty());  // the map is not kept
+    // The quadtree from the cache's index: the in-memory one's boxes, one float step wider at most.
+    REQUIRE(t->quadtree().levels() == tree.levels());
+    for (int l = 0; l < tree.levels(); ++l)
+        for (int z = 0; z < tree.nodesPerSide(l).y; ++z)
+            for (int x = 0; x < tree.nodesPerSide(l).x; ++x) {
+                const glm::vec2 a = tree.minMax(l, x, z), b = t->quadtree().minMax(l, x, z);
+                REQUIRE(b.x <= a.x);
+                REQUIRE(b.y >= a.y);
+                REQUIRE(a.x - b.x <= 1e-3f);
+                REQUIRE(b.y - a.y <= 1e-3f);
+            }
+    CHECK(first.holes == 0);
+    CHECK(first.counters.at("terrain.stream.missing") > 0);
+
+    t->stream()->settle();
+    const Frame settled = render(s, overview());
+    CHECK(settled.holes == 0);
+    CHECK(settled.counters.at("terrain.stream.missing") == 0);
+    CHECK(settled.counters.at("terrain.stream.missing_error_px") == 0.0);
+    CHECK(t->stream()->checkConsistency() == "");
+    const double db_settled = psnr(memory, settled), db_first = psnr(memory, first);
+    std::printf("stream: PSNR against in-memory: first frame %.1f dB, settled %.1f dB; missing %g -> %g nodes, "
+                "%.2f px added; resident %g pages; memory %.2f MB streamed\n",
+                db_first, db_settled, first.counters.at("terrain.stream.missing"),
+                settled.counters.at("terrain.stream.missing"), first.counters.at("terrain.stream.missing_error_px"),
+                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6);
+    CHECK(db_settled >= 40.0);
+    CHECK(db_first < db_settled - 3.0);  // the comparison sees the coarser first frame
+}
+
+TEST_CASE("gl: a streamed terrain on a slow disk never shows a hole along a fast flight") {
+    TileStream::setReadDelayForTests(20);  // ms per tile: loads lag the camera by many frames
+    Settings s = islandScene(true, 1024);
+    s.terrain.stream.prefetch_frames = 4;
+    int missing = 0;
+    for (int i = 0; i < 8; ++i) {
+        // 180 m per frame at 800 m above sea level (over the peaks), looking down ahead.
+        const ViewParams view{{-600.0 + 150.0 * i, 800.0, 400.0 - 100.0 * i}, 250.0, -70.0, 60.0, 0.5, 160, 90};
+        const Frame f = render(s, view);
+        INFO("frame " << i << ": missing " << f.counters.at("terrain.stream.missing"));
+        CHECK(f.holes == 0);
+        missing += int(f.counters.at("terrain.stream.missing"));
+    }
+    CHECK(missing > 0);  // the disk was slow: nodes were drawn from coarser tiles
+    CHECK(renderer().terrain()->stream()->checkConsistency() == "");
+    // The hole count can fail: looking up at the empty sky leaves pixels uncovered.
+    const Frame up = render(s, ViewParams{{0.0, 800.0, 0.0}, 0.0, 30.0, 60.0, 0.5, 160, 90});
+    CHECK(up.holes > 0);
+    TileStream::setReadDelayForTests(0);
+}
+
+TEST_CASE("gl: a streamed terrain with a tiny pool evicts and stays consistent") {
+    TileStream::setReadDelayForTests(0);
+    const Settings s = islandScene(true, 96);  // the three coarsest levels (21 tiles) and 75 more
+    std::int64_t evicted = 0;
+    for (int i = 0; i < 6; ++i) {
+        const ViewParams view{{-700.0 + 280.0 * i, 800.0, 300.0}, 90.0 * i, -70.0, 60.0, 0.5, 160, 90};
+        render(s, view);
+        renderer().terrain()->stream()->settle();  // uploads (and evicts) all it can; counted since the frame began
+        evicted += renderer().terrain()->stream()->counters().evicted;
+        const Frame f = render(s, view);
+        CHECK(f.holes == 0);
+        CHECK(f.counters.at("terrain.stream.resident") <= 96);
+        REQUIRE(renderer().terrain()->stream()->checkConsistency() == "");
+    }
+    CHECK(evicted > 0);
+}
+
+TEST_CASE("gl: streaming refuses what it cannot serve, naming the key or file and what is accepted") {
+    Settings s = islandScene(true);
+    s.grass.enabled = true;  // the grass reads the whole map's height texture
+    InputErrors errors = renderer().prepare(s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == "[terrain.stream] enabled");
+    CHECK(errors[0].message.find("[grass] enabled") != std::string::npos);
+
+    // An up-to-date cache with tiles of another size than the grid is refused, not replaced.
+    TileCacheKey key;
+    REQUIRE(tileCacheKey(islandFile(), key).empty());
+    const std::filesystem::path other = islandFile().parent_path() / "tile64.vtc";
+    const TerrainMapping mapping{4096.0, 600.0, 0.0, 1025, 1025};
+    REQUIRE(buildTileCache(loadHeightmap(islandFile(), 0, 0, errors), mapping, key, 64, other, true).empty());
+    s = islandScene(true);
+    s.terrain.stream.cache = other.string();
+    errors = renderer().prepare(s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == other.string());
+    CHECK(errors[0].message.find("--tile 32") != std::string::npos);
+    std::string why;
+    CHECK(TileCache::open(other, why)->tileSize() == 64);  // still there
+}
