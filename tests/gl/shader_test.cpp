@@ -141,8 +141,8 @@ TEST_CASE("gl: the variant structs enumerate exactly the valid combinations of t
     CHECK(LightCullVariant::all().size() == 2 * 2);
     for (const LightCullVariant& v : LightCullVariant::all()) CHECK(screenCulled(v.method));
     // water.surface: unlit or each method, with or without the sun's shadows, each method's further
-    // chunks (no sun), and the three debug views alone.
-    CHECK(WaterSurfaceVariant::all().size() == 2 + 4 * 3 + 3);
+    // chunks (no sun), the three debug views alone, and the surface's motion (water.velocity).
+    CHECK(WaterSurfaceVariant::all().size() == 2 + 4 * 3 + 3 + 1);
 }
 
 TEST_CASE("gl: a shader error is reported at its file:line through an include") {
