@@ -257,6 +257,7 @@ int quality(const SceneOptions& scene, const QualityCliOptions& q) {
     o.temporal.settle_frames = o.warmup;
     o.bench = q.bench;
     o.reference_preset = *qualityPresetFromName(q.reference_preset);
+    o.pinned = scene.overrides;
     o.out = q.out.empty() ? std::filesystem::path(c.out) / (q.bench ? "bench_temporal" : "quality") : std::filesystem::path(q.out);
     o.backend = q.backend == "egl" ? Backend::Egl : Backend::OSMesa;
     if (!q.knobs.empty()) {

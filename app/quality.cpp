@@ -15,6 +15,7 @@
 #include "app/scene.h"
 #include "app/stats.h"
 #include "app/temporal_quality.h"
+#include "config/ini.h"
 #include "config/presets.h"
 
 #include <algorithm>
@@ -24,11 +25,6 @@
 
 namespace vista {
 namespace {
-
-struct RunSpec {
-    std::string name, kind, knob, value;
-    Settings settings;
-};
 
 std::string knobValue(const QualityKnob& k, double v) {
     if (v == 0.0 && k.special_zero) return k.special_zero;
@@ -51,6 +47,46 @@ std::string qualityKnobNames() {
     return names;
 }
 
+std::vector<QualityRunSpec> qualityRuns(const QualityOptions& o, std::vector<std::string>& inactive_knobs,
+                                    std::vector<std::string>& knob_order) {
+    const Settings& scene = o.scene;
+    std::vector<QualityRunSpec> runs;
+    auto preset = [&](QualityPreset p) {
+        QualityRunSpec r{qualityPresetName(p), "preset", "", "", scene};
+        applyQualityPreset(r.settings, p);
+        for (const std::string& assignment : o.pinned) applyOverride(assignment, r.settings);  // valid: the scene took them
+        runs.push_back(std::move(r));
+    };
+    preset(o.reference_preset);
+    runs.front().name = "reference";
+    if (o.bench)
+        runs.push_back(QualityRunSpec{"scene", "scene", "", "", scene});
+    else
+        for (QualityPreset p : {QualityPreset::Low, QualityPreset::Medium, QualityPreset::High, QualityPreset::Ultra}) preset(p);
+    const Settings reference = runs.front().settings;
+    for (const QualityKnob& k : o.bench ? std::vector<QualityKnob>{} : qualityKnobs()) {
+        const bool chosen = o.all_knobs || std::find(o.knobs.begin(), o.knobs.end(), k.name) != o.knobs.end();
+        if (!chosen) continue;
+        if (!k.active(scene)) {
+            inactive_knobs.push_back(k.name);
+            continue;
+        }
+        std::vector<double> values;
+        for (int i = 0; i + 1 < kQualityPresetCount; ++i) {
+            const double v = k.levels[std::size_t(i)];
+            if (v != k.levels.back() && std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+        }
+        if (values.empty()) continue;
+        knob_order.push_back(k.name);
+        for (double v : values) {
+            QualityRunSpec r{std::string(k.name) + "=" + knobValue(k, v), "knob", k.name, knobValue(k, v), reference};
+            k.apply(r.settings, v, scene);
+            runs.push_back(std::move(r));
+        }
+    }
+    return runs;
+}
+
 int runQuality(const QualityOptions& o) {
     const Settings& scene = o.scene;
     const CaptureSettings& c = scene.capture;
@@ -67,40 +103,8 @@ int runQuality(const QualityOptions& o) {
 
     // The runs: the reference first (every other run is compared with it), the other presets,
     // then per knob every preset value that differs from the reference's.
-    std::vector<RunSpec> runs;
     QualityReport report;
-    auto preset = [&](QualityPreset p) {
-        RunSpec r{qualityPresetName(p), "preset", "", "", scene};
-        applyQualityPreset(r.settings, p);
-        runs.push_back(std::move(r));
-    };
-    preset(o.reference_preset);
-    runs.front().name = "reference";
-    if (o.bench)
-        runs.push_back(RunSpec{"scene", "scene", "", "", scene});
-    else
-        for (QualityPreset p : {QualityPreset::Low, QualityPreset::Medium, QualityPreset::High, QualityPreset::Ultra}) preset(p);
-    const Settings reference = runs.front().settings;
-    for (const QualityKnob& k : o.bench ? std::vector<QualityKnob>{} : qualityKnobs()) {
-        const bool chosen = o.all_knobs || std::find(o.knobs.begin(), o.knobs.end(), k.name) != o.knobs.end();
-        if (!chosen) continue;
-        if (!k.active(scene)) {
-            report.inactive_knobs.push_back(k.name);
-            continue;
-        }
-        std::vector<double> values;
-        for (int i = 0; i + 1 < kQualityPresetCount; ++i) {
-            const double v = k.levels[std::size_t(i)];
-            if (v != k.levels.back() && std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
-        }
-        if (values.empty()) continue;
-        report.knob_order.push_back(k.name);
-        for (double v : values) {
-            RunSpec r{std::string(k.name) + "=" + knobValue(k, v), "knob", k.name, knobValue(k, v), reference};
-            k.apply(r.settings, v, scene);
-            runs.push_back(std::move(r));
-        }
-    }
+    const std::vector<QualityRunSpec> runs = qualityRuns(o, report.inactive_knobs, report.knob_order);
 
     std::string error;
     ContextOptions options{c.width, c.height, /*visible=*/false, false, false, scene.window.gl_debug, "vista quality"};
@@ -132,7 +136,7 @@ int runQuality(const QualityOptions& o) {
     const int per_run = o.warmup + o.frames;
     Progress progress(int(runs.size()) * per_run, "quality");
     int done = 0;
-    for (RunSpec& spec : runs) {
+    for (const QualityRunSpec& spec : runs) {
         errors = renderer.prepare(spec.settings);
         if (!errors.empty()) {
             printErrors(errors);

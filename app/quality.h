@@ -30,7 +30,22 @@ struct QualityOptions {
     TemporalQualityOptions temporal;  // the temporal columns (docs/temporal.md, "Temporal error")
     bool bench = false;               // `vista bench temporal`: the reference and the scene as given, no knobs
     QualityPreset reference_preset = QualityPreset::Reference;  // bench temporal --reference-preset
+    // The command line's --set assignments: applied again over every preset, so they hold in
+    // every run (as over capture --preset); a swept knob still sets its own key.
+    std::vector<std::string> pinned;
 };
+
+// One run of `vista quality`: a preset, the scene as given, or the reference with one knob lowered.
+struct QualityRunSpec {
+    std::string name, kind, knob, value;  // kind: "preset", "scene" or "knob"
+    Settings settings;
+};
+
+// The runs in order: the reference, the other presets (or the scene as given), then per chosen
+// knob every level below the reference's. Knobs the scene leaves without effect go to
+// `inactive_knobs`; the swept ones, in order, to `knob_order`.
+std::vector<QualityRunSpec> qualityRuns(const QualityOptions& options, std::vector<std::string>& inactive_knobs,
+                                    std::vector<std::string>& knob_order);
 
 // Names of the knobs a --knobs list may give (qualityKnobs()), comma-separated, for messages.
 std::string qualityKnobNames();

@@ -2,60 +2,32 @@
 // fetch per tap for both; with full size and no blur the raw target is the result.
 #include "postfx/ssao.h"
 
-#include <algorithm>
+#include "renderer/pass_kit.h"
 
 namespace vista {
+namespace {
+#include "postfx/shaders/ssao_block.glsl"
+#include "postfx/shaders/ssao_blur_block.glsl"
+}  // namespace
 
 TextureHandle addSsaoPasses(FrameGraph& graph, const RenderContext& rc, const SceneTargets& scene, const SsaoSettings& s) {
-    struct Raw {
-        TextureHandle depth, normal, ao;
-    };
     const int scale = s.half_resolution ? 2 : 1;
-    const glm::vec4 params{s.radius_m, s.intensity, s.bias, float(scale)};
-    const glm::ivec2 counts{s.directions, s.steps};
-    const Raw& raw = graph.addPass<Raw>("postfx.ssao",
-        [&](PassBuilder& b, Raw& d) {
-            d.depth = b.read(scene.depth);
-            d.normal = b.read(scene.normal);
-            const TextureDesc& full = b.desc(scene.depth);
-            TextureDesc desc{std::max(1, (full.width + scale - 1) / scale), std::max(1, (full.height + scale - 1) / scale),
-                             PixelFormat::RG16F};
-            d.ao = b.write(b.create("ssao.raw", desc));
-        },
-        [&rc, params, counts](const Raw& d, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(d.ao);
-            bindTarget(rc.device.framebuffer({ctx.texture(d.ao)}), desc.width, desc.height);
-            GLuint program = rc.shaders.id("postfx/shaders/ssao.glsl");
-            glUseProgram(program);
-            glProgramUniform4f(program, 0, params.x, params.y, params.z, params.w);
-            glProgramUniform2i(program, 1, counts.x, counts.y);
-            glBindTextureUnit(0, ctx.texture(d.depth));
-            glBindTextureUnit(1, ctx.texture(d.normal));
-            drawFullscreen(rc);
-        });
-    if (scale == 1 && !s.blur) return raw.ao;
+    SsaoBlock block{};
+    block.u_params = {s.radius_m, s.intensity, s.bias, float(scale)};
+    block.u_counts = {s.directions, s.steps, 0, 0};
+    FullscreenPass raw("postfx.ssao", {"postfx/shaders/ssao.glsl", {}}, {scene.depth, scene.normal}, "ssao.raw");
+    raw.format = PixelFormat::RG16F;
+    raw.divisor = scale;
+    raw.divide_up = true;
+    const TextureHandle ao = addFullscreenPass(graph, rc, std::move(raw), block);
+    if (scale == 1 && !s.blur) return ao;
 
-    struct Blur {
-        TextureHandle raw, depth, ao;
-    };
-    const glm::vec3 blur{s.blur_depth_tolerance, s.blur ? 1.0f : 0.0f, float(scale)};
-    return graph.addPass<Blur>("postfx.ssao.blur",
-        [&](PassBuilder& b, Blur& d) {
-            d.raw = b.read(raw.ao);
-            d.depth = b.read(scene.depth);
-            const TextureDesc& full = b.desc(scene.depth);
-            d.ao = b.write(b.create("scene.ao", {full.width, full.height, PixelFormat::R16F}));
-        },
-        [&rc, blur](const Blur& d, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(d.ao);
-            bindTarget(rc.device.framebuffer({ctx.texture(d.ao)}), desc.width, desc.height);
-            GLuint program = rc.shaders.id("postfx/shaders/ssao_blur.glsl");
-            glUseProgram(program);
-            glProgramUniform3f(program, 0, blur.x, blur.y, blur.z);
-            glBindTextureUnit(0, ctx.texture(d.raw));
-            glBindTextureUnit(1, ctx.texture(d.depth));
-            drawFullscreen(rc);
-        }).ao;
+    SsaoBlurBlock blur{};
+    blur.u_blur = {s.blur_depth_tolerance, s.blur ? 1.0f : 0.0f, float(scale), 0.0f};
+    FullscreenPass pass("postfx.ssao.blur", {"postfx/shaders/ssao_blur.glsl", {}}, {ao, scene.depth}, "scene.ao");
+    pass.size_from = scene.depth;
+    pass.format = PixelFormat::R16F;
+    return addFullscreenPass(graph, rc, std::move(pass), blur);
 }
 
 ProgramList ssaoPrograms() {

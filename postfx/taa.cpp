@@ -2,12 +2,13 @@
 // pass; where each pixel was in the previous frame comes from the frame's motion vectors.
 #include "postfx/taa.h"
 
-#include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "renderer/temporal.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace vista {
+namespace {
+#include "postfx/shaders/taa_block.glsl"
+}  // namespace
 
 glm::dvec2 TemporalAA::jitterPx(std::uint64_t index) { return taaJitterPx(index); }
 
@@ -43,44 +44,16 @@ TextureHandle TemporalAA::addPass(FrameGraph& graph, const RenderContext& rc, Te
     valid_ = true;
     const int read = current_, write = 1 - current_;
     current_ = write;
-    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, float(rc.view.near_m), 0.0f);
-    const glm::vec4 params(s.blend, s.clip_gamma, s.sharpen, history ? 0.0f : 1.0f);
-    const float disocclusion = s.disocclusion;
-
-    struct Data {
-        TextureHandle image, depth, velocity, history, prev_depth, out, new_history, new_depth;
-    };
+    TaaBlock block{};
+    block.u_jitter = {rc.jitter_ndc.x, rc.jitter_ndc.y, float(rc.view.near_m), s.disocclusion};
+    block.u_params = {s.blend, s.clip_gamma, s.sharpen, history ? 0.0f : 1.0f};
     const TextureHandle history_in = graph.importTexture("taa.history", {w, h, PixelFormat::RGBA16F}, colour_[read].id());
     const TextureHandle depth_in = graph.importTexture("taa.depth", {w, h, PixelFormat::R32F}, depth_[read].id());
-    const TextureHandle history_out = graph.importTexture("taa.history_next", {w, h, PixelFormat::RGBA16F}, colour_[write].id());
-    const TextureHandle depth_out = graph.importTexture("taa.depth_next", {w, h, PixelFormat::R32F}, depth_[write].id());
-    return graph.addPass<Data>("postfx.taa",
-        [&](PassBuilder& b, Data& d) {
-            d.image = b.read(image);
-            d.depth = b.read(depth);
-            d.velocity = b.read(velocity);
-            d.history = b.read(history_in);
-            d.prev_depth = b.read(depth_in);
-            d.out = b.write(b.create("taa.out", {w, h, PixelFormat::RGBA16F}));
-            d.new_history = b.write(history_out);
-            d.new_depth = b.write(depth_out);
-        },
-        [&rc, jitter, params, disocclusion](const Data& d, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(d.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.new_history), ctx.texture(d.new_depth)}),
-                       desc.width, desc.height);
-            const GLuint program = rc.shaders.id("postfx/shaders/taa.glsl");
-            glUseProgram(program);
-            glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
-            glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
-            glProgramUniform1f(program, 3, disocclusion);
-            glBindTextureUnit(binding::kTex0, ctx.texture(d.image));
-            glBindTextureUnit(binding::kTex1, ctx.texture(d.depth));
-            glBindTextureUnit(binding::kTex2, ctx.texture(d.history));
-            glBindTextureUnit(binding::kTex3, ctx.texture(d.prev_depth));
-            glBindTextureUnit(binding::kTex4, ctx.texture(d.velocity));
-            drawFullscreen(rc);
-        }).out;
+    FullscreenPass pass("postfx.taa", {"postfx/shaders/taa.glsl", {}}, {image, depth, history_in, depth_in, velocity}, "taa.out");
+    pass.format = PixelFormat::RGBA16F;
+    pass.also_writes = {graph.importTexture("taa.history_next", {w, h, PixelFormat::RGBA16F}, colour_[write].id()),
+                        graph.importTexture("taa.depth_next", {w, h, PixelFormat::R32F}, depth_[write].id())};
+    return addFullscreenPass(graph, rc, std::move(pass), block);
 }
 
 ProgramList taaPrograms() {

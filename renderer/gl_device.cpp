@@ -49,6 +49,10 @@ std::uint32_t GlDevice::createBuffer(const BufferDesc& desc, const std::string& 
 void GlDevice::destroyBuffer(std::uint32_t id) { buffers_.erase(id); }
 
 GLuint GlDevice::framebuffer(std::initializer_list<GLuint> colors, GLuint depth) {
+    return framebuffer(std::vector<GLuint>(colors), depth);
+}
+
+GLuint GlDevice::framebuffer(const std::vector<GLuint>& colors, GLuint depth) {
     std::vector<GLuint> key(colors);
     key.push_back(depth);
     auto it = framebuffers_.find(key);

@@ -24,6 +24,7 @@ public:
     // A framebuffer with these colour attachments (in order) and depth (0: none), made
     // once and reused; dropped when one of its textures is destroyed.
     GLuint framebuffer(std::initializer_list<GLuint> colors, GLuint depth = 0);
+    GLuint framebuffer(const std::vector<GLuint>& colors, GLuint depth = 0);
 
     // Copies a pass's uniform block into a ring buffer and binds that range at uniform
     // block binding `binding` (renderer/pass_kit.h: bindPassBlock). Later draws read the

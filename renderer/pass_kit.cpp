@@ -41,11 +41,13 @@ TextureHandle addFullscreenPass(FrameGraph& graph, const RenderContext& rc, Full
         std::vector<TextureHandle> inputs;
         std::vector<std::pair<int, BufferHandle>> buffers;
         TextureHandle out;
+        std::vector<TextureHandle> also;
     };
     std::string name = pass.name;
     const Data& d = graph.addPass<Data>(std::move(name),
         [&](PassBuilder& b, Data& data) {
             for (TextureHandle in : pass.inputs) data.inputs.push_back(b.read(in));
+            for (TextureHandle out : pass.also_writes) data.also.push_back(b.write(out));
             for (const auto& [binding, buffer] : pass.buffers) data.buffers.emplace_back(binding, b.read(buffer));
             const TextureDesc& first = b.desc(pass.size_from.valid() ? pass.size_from : pass.inputs.front());
             const int divisor = std::max(pass.divisor, 1), up = pass.divide_up ? divisor - 1 : 0;
@@ -56,7 +58,9 @@ TextureHandle addFullscreenPass(FrameGraph& graph, const RenderContext& rc, Full
         [&rc, program = std::move(pass.program), textures = std::move(pass.textures), state = pass.state,
          uniforms = std::move(uniforms)](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
+            std::vector<GLuint> attachments{ctx.texture(data.out)};
+            for (TextureHandle out : data.also) attachments.push_back(ctx.texture(out));
+            bindTarget(rc.device.framebuffer(attachments), desc.width, desc.height);
             state.apply();
             const GLuint id = rc.shaders.id(program);
             glUseProgram(id);

@@ -66,7 +66,8 @@ struct FullscreenPass {
     std::vector<TextureHandle> inputs;                   // texture units 0, 1, ...; inputs[0] sizes the target
     std::vector<std::pair<int, GLuint>> textures;        // (unit, GL name): textures owned outside the graph
     std::vector<std::pair<int, BufferHandle>> buffers;   // (shader storage binding, buffer read)
-    std::string target;                                  // the new target's name
+    std::string target;                                  // the new target's name (colour attachment 0)
+    std::vector<TextureHandle> also_writes;              // attachments 1, 2, ...: targets made earlier or imported
     std::optional<PixelFormat> format;                   // the target's format; inputs[0]'s when unset
     int divisor = 1;                                     // the target is inputs[0]'s size / divisor (at least 1), one level
     bool divide_up = false;                              // round that division up (tiles covering the image)

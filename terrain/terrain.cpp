@@ -614,10 +614,15 @@ void Terrain::bindSplat(GLuint program, GLint location) const {
     glProgramUniform4iv(program, location, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
 }
 
+Terrain::TileRows Terrain::tileRows() const {
+    return {{tiles_.count.x, tiles_.count.y, tiles_.span, 0},
+            {float(tiles_.layer.x), float(tiles_.layer.y), float(mapping_.width), float(mapping_.height)}};
+}
+
 void Terrain::bindTiles(GLuint program, GLint location) const {
-    glProgramUniform4i(program, location, tiles_.count.x, tiles_.count.y, tiles_.span, 0);
-    glProgramUniform4f(program, location + 1, float(tiles_.layer.x), float(tiles_.layer.y), float(mapping_.width),
-                       float(mapping_.height));
+    const TileRows rows = tileRows();
+    glProgramUniform4iv(program, location, 1, &rows.tiles.x);
+    glProgramUniform4fv(program, location + 1, 1, &rows.layer.x);
 }
 
 void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {

@@ -160,7 +160,13 @@ public:
     GLuint heightTexture() const { return height_.id(); }
     GLuint normalTexture() const { return normals_.id(); }   // world normals (RGBA8 snorm tiles)
     GLuint albedoTexture() const { return albedo_.id(); }    // material albedo array (sRGB, A = roughness)
-    // Sets the tile uniforms (ivec4 count.xy, span; vec4 layer.xy, map size) at location, location + 1.
+    // The height texture's tile layout as tiles.glsl takes it: count.xy, span; layer.xy, map size.
+    struct TileRows {
+        glm::ivec4 tiles;
+        glm::vec4 layer;
+    };
+    TileRows tileRows() const;
+    // Sets the tile rows as uniforms at location, location + 1.
     void bindTiles(GLuint program, GLint location) const;
     // With a splat map: binds its weights to BINDING_TEX_5 and sets the layer of each channel
     // (ivec4[2], material.glsl splatWeightsAt) at location, location + 1 (programs with splatDefines()).

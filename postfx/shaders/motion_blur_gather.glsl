@@ -11,7 +11,7 @@
 layout(binding = BINDING_TEX_0) uniform sampler2D u_image;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_velocity;   // rg half vector (px), b view distance
 layout(binding = BINDING_TEX_2) uniform sampler2D u_neighbors;  // longest half vector around each tile
-layout(location = 0) uniform vec4 u_params;  // taps, depth extent (relative), k (px)
+#include "motion_blur_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 vec3 colourAt(ivec2 p) {
@@ -22,13 +22,13 @@ vec3 colourAt(ivec2 p) {
 float cone(float dist, float len) { return clamp(1.0 - dist / len, 0.0, 1.0); }
 float cylinder(float dist, float len) { return 1.0 - smoothstep(0.95 * len, 1.05 * len, dist); }
 // 1 when a is in front of b (or within the extent), 0 when clearly behind.
-float inFront(float a, float b) { return clamp(1.0 - (a - b) / (u_params.y * min(a, b)), 0.0, 1.0); }
+float inFront(float a, float b) { return clamp(1.0 - (a - b) / (u_gather.y * min(a, b)), 0.0, 1.0); }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(u_image, 0);
     vec4 src = texelFetch(u_image, p, 0);
-    vec2 vn = texelFetch(u_neighbors, p / int(u_params.z), 0).rg;
+    vec2 vn = texelFetch(u_neighbors, p / int(u_gather.z), 0).rg;
     if (dot(vn, vn) < 0.25) {
         o_color = vec4(colourAt(p), src.a);
         return;
@@ -37,7 +37,7 @@ void main() {
     float lx = max(length(vx.xy), 0.5);
     float weight = 1.0 / lx;
     vec3 sum = colourAt(p) * weight;
-    int taps = int(u_params.x);
+    int taps = int(u_gather.x);
     float jitter = fract(52.9829189 * fract(dot(vec2(p), vec2(0.06711056, 0.00583715)))) - 0.5;
     for (int i = 0; i < taps; ++i) {
         float t = mix(-1.0, 1.0, (float(i) + jitter + 1.0) / float(taps + 1));

@@ -5,7 +5,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_in;
-layout(location = 0) uniform ivec2 u_mode;  // mode, k (px)
+#include "motion_blur_block.glsl"
 layout(location = 0) out vec4 o_max;
 
 void main() {
@@ -13,8 +13,8 @@ void main() {
     ivec2 size = textureSize(u_in, 0);
     vec2 longest = vec2(0.0);
     float len2 = 0.0;
-    ivec2 lo = u_mode.x == 0 ? t * u_mode.y : max(t - 1, ivec2(0));
-    ivec2 hi = u_mode.x == 0 ? min(t * u_mode.y + u_mode.y, size) - 1 : min(t + 1, size - 1);
+    ivec2 lo = u_tiles.x == 0 ? t * u_tiles.y : max(t - 1, ivec2(0));
+    ivec2 hi = u_tiles.x == 0 ? min(t * u_tiles.y + u_tiles.y, size) - 1 : min(t + 1, size - 1);
     for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {
             vec2 v = texelFetch(u_in, ivec2(x, y), 0).rg;

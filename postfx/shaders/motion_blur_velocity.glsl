@@ -9,7 +9,7 @@
 #include "../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_motion;  // temporal.velocity
-layout(location = 1) uniform vec4 u_params;  // exposure / frame time, k (px), near (m)
+#include "motion_blur_block.glsl"
 layout(location = 0) out vec4 o_velocity;
 
 void main() {
@@ -20,14 +20,14 @@ void main() {
     vec4 motion = texelFetch(u_motion, p, 0);
     vec2 half_v = vec2(0.0);
     if (motion.a > 0.5) {
-        half_v = motion.xy * size * (0.5 * u_params.x);
+        half_v = motion.xy * size * (0.5 * u_vel_pass.x);
     } else {
-        half_v = vec2(u_params.y, 0.0);  // behind the previous camera: as long as allowed
+        half_v = vec2(u_vel_pass.y, 0.0);  // behind the previous camera: as long as allowed
     }
     float len = length(half_v);
     if (isnan(len) || isinf(len)) half_v = vec2(0.0), len = 0.0;
-    if (len > u_params.y) half_v *= u_params.y / len;
-    float distance = d > 0.0 ? min(u_params.z / d, 65000.0) : 65000.0;
+    if (len > u_vel_pass.y) half_v *= u_vel_pass.y / len;
+    float distance = d > 0.0 ? min(u_vel_pass.z / d, 65000.0) : 65000.0;
     o_velocity = vec4(half_v, distance, 1.0);
 }
 #endif

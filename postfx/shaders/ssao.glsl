@@ -12,8 +12,7 @@
 #include "../../renderer/shaders/blue_noise.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_normal;
-layout(location = 0) uniform vec4 u_params;   // radius_m, intensity, bias, full-size pixels per texel (1 or 2)
-layout(location = 1) uniform ivec2 u_counts;  // directions, steps
+#include "ssao_block.glsl"
 layout(location = 0) out vec4 o_ao;
 
 void main() {

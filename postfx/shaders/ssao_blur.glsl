@@ -8,7 +8,7 @@
 #include "../../renderer/shaders/common.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_ao;     // r visibility, g view distance
 layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;  // full size
-layout(location = 0) uniform vec3 u_params;  // depth tolerance, radius (0 or 1), full pixels per AO texel
+#include "ssao_blur_block.glsl"
 layout(location = 0) out vec4 o_ao;
 
 void main() {
@@ -20,13 +20,13 @@ void main() {
     }
     float z = linearDepth(depth);
     ivec2 size = textureSize(u_ao, 0);
-    ivec2 q = min(p / int(u_params.z), size - 1);
-    int r = int(u_params.y);
+    ivec2 q = min(p / int(u_blur.z), size - 1);
+    int r = int(u_blur.y);
     float sum = 0.0, weight = 0.0;
     for (int dy = -r; dy <= r; ++dy) {
         for (int dx = -r; dx <= r; ++dx) {
             vec2 s = texelFetch(u_ao, clamp(q + ivec2(dx, dy), ivec2(0), size - 1), 0).rg;
-            float w = (2.0 - float(abs(dx))) * (2.0 - float(abs(dy))) * exp(-abs(s.g - z) / (z * u_params.x));
+            float w = (2.0 - float(abs(dx))) * (2.0 - float(abs(dy))) * exp(-abs(s.g - z) / (z * u_blur.x));
             sum += s.r * w;
             weight += w;
         }

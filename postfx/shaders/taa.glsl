@@ -19,9 +19,7 @@ layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_2) uniform sampler2D u_history;
 layout(binding = BINDING_TEX_3) uniform sampler2D u_prev_depth;
 layout(binding = BINDING_TEX_4) uniform sampler2D u_velocity;  // rg uv motion, b previous depth, a valid
-layout(location = 1) uniform vec4 u_jitter;  // xy this frame's jitter (NDC), z near plane (m)
-layout(location = 2) uniform vec4 u_params;  // x blend, y clip gamma, z sharpen, w 1: history rejected (cut, first frame)
-layout(location = 3) uniform float u_disocclusion;
+#include "taa_block.glsl"
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_history;
 layout(location = 2) out float o_depth;
@@ -103,7 +101,7 @@ void main() {
         float d01 = texelFetch(u_prev_depth, ivec2(q0.x, q1.y), 0).r, d11 = texelFetch(u_prev_depth, q1, 0).r;
         float farthest_depth = min(min(d00, d10), min(d01, d11));  // reversed-Z: the smallest is the farthest
         float farthest = farthest_depth > 0.0 ? u_jitter.z / farthest_depth : 1e30;
-        if (farthest < expected * (1.0 - u_disocclusion)) valid = false;
+        if (farthest < expected * (1.0 - u_jitter.w)) valid = false;
     }
     vec3 result = current, display = current;
     if (valid) {

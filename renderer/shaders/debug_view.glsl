@@ -4,7 +4,7 @@
 //   3 normals: the G-buffer's world normal as colour (n * 0.5 + 0.5); unlit pixels black;
 //   7 shadow:  the sun's visibility lighting.sun wrote into the HDR target (white lit);
 //   4 lights:  heat map of local-light evaluations per pixel (lights.shade's count target),
-//              blue 0 .. green .. yellow .. red at u_heat_max and above, sky dark.
+//              blue 0 .. green .. yellow .. red at u_heat.x and above, sky dark.
 #include "fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -12,8 +12,7 @@
 #include "gbuffer.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_source;   // albedo, normal or heat
-layout(location = 0) uniform int u_mode;
-layout(location = 1) uniform float u_heat_max;  // < 0: no heat target (no local lights)
+#include "debug_view_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 vec3 heat(float t) {
@@ -37,17 +36,17 @@ void main() {
         return;
     }
     vec3 c;
-    if (u_mode == 2) {
+    if (u_debug_view.x == 2) {
         c = linearToSrgb(decodeSurface(texelFetch(u_source, p, 0), vec4(0.5, 0.5, 0.0, 1.0)).albedo);
-    } else if (u_mode == 3) {
+    } else if (u_debug_view.x == 3) {
         vec4 n = texelFetch(u_source, p, 0);
         c = n.w > 0.5 ? decodeNormal(n.xy) * 0.5 + 0.5 : vec3(0.0);
-    } else if (u_mode == 7) {
+    } else if (u_debug_view.x == 7) {
         c = vec3(clamp(texelFetch(u_source, p, 0).r, 0.0, 1.0));  // sun visibility (lighting.sun, SHADOW_TERM_VIEW)
-    } else if (u_mode == 4) {
-        float count = u_heat_max < 0.0 ? 0.0 : texelFetch(u_source, p, 0).r;  // < 0: no local lights
+    } else if (u_debug_view.x == 4) {
+        float count = u_heat.x < 0.0 ? 0.0 : texelFetch(u_source, p, 0).r;  // < 0: no local lights
         // Lights evaluated at this pixel; 0 stays dark blue so light-free areas show.
-        c = count > 0.0 ? heat(count / max(u_heat_max, 1.0)) : vec3(0.0, 0.0, 0.15);
+        c = count > 0.0 ? heat(count / max(u_heat.x, 1.0)) : vec3(0.0, 0.0, 0.15);
     } else {
         // 1 m .. 64 km spread over the grey ramp.
         float t = clamp(log2(max(linearDepth(depth), 1e-3)) / 16.0, 0.0, 1.0);

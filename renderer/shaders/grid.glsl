@@ -3,10 +3,7 @@
 
 #ifdef FRAGMENT_SHADER
 #include "common.glsl"
-layout(location = 0) uniform vec2 u_origin;    // camera xz modulo the pattern period
-layout(location = 1) uniform float u_height;   // camera height above the plane (m)
-layout(location = 2) uniform float u_spacing;  // minor line spacing (m)
-layout(location = 3) uniform float u_sky;      // 1 when a sky lights the scene
+#include "grid_block.glsl"
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 
@@ -34,7 +31,7 @@ void main() {
     albedo = mix(albedo, vec3(0.85, 0.85, 0.80), major);
     vec3 n = vec3(0.0, sign(u_height + 1e-30), 0.0);
     float sun = max(dot(n, u_sun_dir.xyz), 0.0) * u_sun_dir.w;
-    vec3 ambient = mix(vec3(0.3), vec3(0.25, 0.3, 0.4) * 1.5, u_sky);
+    vec3 ambient = mix(vec3(0.3), vec3(0.25, 0.3, 0.4) * 1.5, u_sky.x);
     o_color = vec4(albedo * (sun + ambient), 1.0);
     vec4 clip = u_view_proj * vec4(rel, 1.0);
     gl_FragDepth = clamp(clip.z / clip.w, 0.0, 1.0);

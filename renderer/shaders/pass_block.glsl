@@ -17,7 +17,9 @@
         using vec2 = glm::vec2;                          \
         using vec3 = glm::vec3;                          \
         using vec4 = glm::vec4;                          \
+        using ivec2 = glm::ivec2;                        \
         using ivec4 = glm::ivec4;                        \
+        using uvec4 = glm::uvec4;                        \
         using mat4 = glm::mat4;                          \
         static constexpr const char* kBlockName = #NAME;
 #define PASS_BLOCK_END };

@@ -2,6 +2,7 @@
 #include "renderer/shadows/point_shadows.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
@@ -11,6 +12,9 @@
 #include <cmath>
 
 namespace vista {
+namespace {
+#include "renderer/shadows/shaders/shadow_view_block.glsl"
+}  // namespace
 
 void PointShadowInput::bind(GLuint texture) const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, uniforms);
@@ -225,8 +229,9 @@ TextureHandle addPointShadowViewPass(FrameGraph& graph, const RenderContext& rc,
         [&rc, shadows, cubes](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id("renderer/shadows/shaders/point_shadow_view.glsl"));
-            glUniform1i(0, data.cubes.valid() ? cubes : 0);
+            const GLuint program = rc.shaders.id("renderer/shadows/shaders/point_shadow_view.glsl");
+            glUseProgram(program);
+            bindPassBlock(rc, program, ShadowViewBlock{{data.cubes.valid() ? cubes : 0, 0, 0, 0}});
             if (data.cubes.valid()) {
                 glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.cubes));
                 glBindSampler(binding::kPointShadowDepth, shadows.depth_sampler);

@@ -2,6 +2,7 @@
 #include "renderer/shadows/spot_shadows.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
@@ -13,6 +14,9 @@
 #include <limits>
 
 namespace vista {
+namespace {
+#include "renderer/shadows/shaders/shadow_view_block.glsl"
+}  // namespace
 
 void SpotShadowInput::bind(GLuint texture) const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kSpotShadowUniforms, uniforms);
@@ -236,8 +240,9 @@ TextureHandle addSpotAtlasViewPass(FrameGraph& graph, const RenderContext& rc, c
         [&rc, shadows, tiles_per_side](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id("renderer/shadows/shaders/spot_atlas_view.glsl"));
-            glUniform1i(0, data.atlas.valid() ? tiles_per_side : 0);
+            const GLuint program = rc.shaders.id("renderer/shadows/shaders/spot_atlas_view.glsl");
+            glUseProgram(program);
+            bindPassBlock(rc, program, ShadowViewBlock{{data.atlas.valid() ? tiles_per_side : 0, 0, 0, 0}});
             if (data.atlas.valid()) {
                 glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.atlas));
                 glBindSampler(binding::kSpotShadowDepth, shadows.depth_sampler);

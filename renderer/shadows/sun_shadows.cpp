@@ -2,6 +2,7 @@
 #include "renderer/shadows/sun_shadows.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
@@ -13,6 +14,9 @@
 #include <limits>
 
 namespace vista {
+namespace {
+#include "renderer/shadows/shaders/shadow_view_block.glsl"
+}  // namespace
 
 namespace {
 
@@ -277,9 +281,9 @@ TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, c
         [&rc, shadows, cascades](const Data& data, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(data.out);
             bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id("renderer/shadows/shaders/shadow_view.glsl"));
-            glUniform1i(0, data.map.valid() ? cascades : 0);
-            glUniform1i(1, int(shadows.drawn));
+            const GLuint program = rc.shaders.id("renderer/shadows/shaders/shadow_view.glsl");
+            glUseProgram(program);
+            bindPassBlock(rc, program, ShadowViewBlock{{data.map.valid() ? cascades : 0, int(shadows.drawn), 0, 0}});
             if (data.map.valid()) {
                 glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.map));
                 glBindSampler(binding::kShadowDepth, shadows.depth_sampler);

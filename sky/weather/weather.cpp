@@ -3,6 +3,7 @@
 #include "sky/weather/weather.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
@@ -32,6 +33,9 @@ glm::dvec3 Weather::cameraVelocity(const glm::dvec3& position, double time_s) {
 }
 
 namespace {
+
+#include "sky/weather/shaders/weather_rain_block.glsl"
+#include "sky/weather/shaders/weather_splash_block.glsl"
 
 // Blends premultiplied radiance over the HDR colour and keeps its alpha; depth test only.
 void blendState() {
@@ -101,14 +105,16 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", snow ? std::vector<std::string>{"SNOW"}
                                                                                   : std::vector<std::string>{});
             glUseProgram(program);
-            glProgramUniform4i(program, 0, frame.box_min.x, frame.box_min.y, frame.box_min.z, layout.cells);
-            glProgramUniform4i(program, 1, layout.half, per_cell, count ? 1 : 0, 0);
-            glProgramUniform4f(program, 2, frame.frac.x, frame.frac.y, frame.frac.z, float(layout.cell_m));
-            glProgramUniform4f(program, 3, motion.x, motion.y, motion.z, s.streak_time_s);
-            glProgramUniform4f(program, 4, s.radius_m, s.near_fade_m, s.drop_width_m, keep_below);
-            glProgramUniform4f(program, 5, ambient.r, ambient.g, ambient.b, opacity);
-            glProgramUniform4f(program, 6, sun.r, sun.g, sun.b, 0.0f);
-            glProgramUniform4f(program, 7, float(kSnowSwayM), frame.sway_phase, float(2.0 * std::numbers::pi * kSnowSwayHz), 0.0f);
+            WeatherRainBlock block{};
+            block.u_box_min = {frame.box_min, layout.cells};
+            block.u_layout = {layout.half, per_cell, count ? 1 : 0, 0};
+            block.u_frac = {frame.frac, float(layout.cell_m)};
+            block.u_motion = {motion, s.streak_time_s};
+            block.u_shape = {s.radius_m, s.near_fade_m, s.drop_width_m, keep_below};
+            block.u_ambient = {ambient, opacity};
+            block.u_sun = {sun, 0.0f};
+            block.u_sway = {float(kSnowSwayM), frame.sway_phase, float(2.0 * std::numbers::pi * kSnowSwayHz), 0.0f};
+            bindPassBlock(rc, program, block);
             glNamedBufferSubData(cell_buffer_.id(), 0, GLsizeiptr(cells_.size() * sizeof(std::uint32_t)), cells_.data());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kWeatherCells, cell_buffer_.id());
             if (count)
@@ -145,17 +151,21 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             glUseProgram(program);
             const TerrainMapping& m = terrain->mapping();
             const glm::dvec3 rel = rc.view.position - ts.origin;
-            glProgramUniform2i(program, 0, sf.box_min.x, sf.box_min.y);
-            glProgramUniform4i(program, 1, sl.cells, sl.half, slots, count ? 1 : 0);
-            glProgramUniform4f(program, 2, sf.frac.x, sf.frac.y, sf.cycle_frac, splash_keep);
-            glProgramUniform1ui(program, 3, sf.cycle);
-            glProgramUniform4f(program, 4, s.splash_size_m, s.splash_radius_m, 0.2f + 0.25f * s.intensity, float(kSplashCellM));
-            glProgramUniform4f(program, 5, ambient.r, ambient.g, ambient.b, 0.0f);
-            glProgramUniform4f(program, 6, sun.r, sun.g, sun.b, 0.0f);
-            glProgramUniform2f(program, 7, float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z));
-            glProgramUniform2f(program, 8, float(m.texelSizeX()), float(m.texelSizeZ()));
-            glProgramUniform2f(program, 9, float(m.height_scale_m), float(m.height_offset_m - rel.y));
-            terrain->bindTiles(program, 10);
+            WeatherSplashBlock block{};
+            block.u_box = sf.box_min;
+            block.u_layout = {sl.cells, sl.half, slots, count ? 1 : 0};
+            block.u_cycle = {sf.frac, sf.cycle_frac, splash_keep};
+            block.u_look = {s.splash_size_m, s.splash_radius_m, 0.2f + 0.25f * s.intensity, float(kSplashCellM)};
+            block.u_ambient = {ambient, 0.0f};
+            block.u_sun = {sun, 0.0f};
+            block.u_map_min = {float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z)};
+            block.u_texel_m = {float(m.texelSizeX()), float(m.texelSizeZ())};
+            block.u_height_map = {float(m.height_scale_m), float(m.height_offset_m - rel.y)};
+            const Terrain::TileRows tiles = terrain->tileRows();
+            block.u_tiles = tiles.tiles;
+            block.u_tile_layer = tiles.layer;
+            block.u_cycle_index = {sf.cycle, 0u, 0u, 0u};
+            bindPassBlock(rc, program, block);
             glBindTextureUnit(binding::kTex0, terrain->heightTexture());
             if (count)
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "weather.splashes"));

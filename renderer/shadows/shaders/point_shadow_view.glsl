@@ -6,8 +6,8 @@
 #ifdef FRAGMENT_SHADER
 #include "../../shaders/common.glsl"
 
-layout(location = 0) uniform int u_cubes;  // cubes (rows); 0: no cubes this frame
 layout(binding = BINDING_POINT_SHADOW_DEPTH) uniform samplerCubeArray u_point_depth;
+#include "shadow_view_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 // The direction of face texel (s, t) (t = 0 the face's top row), as GL's cube-map table has it.
@@ -23,11 +23,11 @@ vec3 cubeDirection(int face, vec2 st) {
 
 void main() {
     vec2 uv = gl_FragCoord.xy * u_viewport.zw;
-    if (u_cubes == 0) {
+    if (u_shadow_view.x == 0) {
         o_color = vec4(0.25, 0.25, 0.25, 1.0);
         return;
     }
-    vec2 grid = vec2(6.0, float(u_cubes));
+    vec2 grid = vec2(6.0, float(u_shadow_view.x));
     vec2 cell = vec2(uv.x, 1.0 - uv.y) * grid;  // rows from the top
     ivec2 index = ivec2(min(floor(cell), grid - 1.0));
     vec2 st = fract(cell);

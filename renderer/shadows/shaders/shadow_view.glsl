@@ -6,25 +6,24 @@
 #ifdef FRAGMENT_SHADER
 #include "../../shaders/common.glsl"
 layout(binding = BINDING_SHADOW_DEPTH) uniform sampler2DArray u_shadow_depth;
-layout(location = 0) uniform int u_cascades;  // 0: no shadow map this frame
-layout(location = 1) uniform int u_drawn;     // bit c: cascade c was drawn this frame
+#include "shadow_view_block.glsl"
 layout(location = 0) out vec4 o_color;
 
 void main() {
     vec2 uv = gl_FragCoord.xy * u_viewport.zw;
-    if (u_cascades == 0) {
+    if (u_shadow_view.x == 0) {
         o_color = vec4(vec3(0.3), 1.0);
         return;
     }
     // Square tiles in a row, as large as the screen allows.
-    float tile = min(u_viewport.x / float(u_cascades), u_viewport.y);
+    float tile = min(u_viewport.x / float(u_shadow_view.x), u_viewport.y);
     vec2 p = gl_FragCoord.xy / tile;
     int c = int(p.x);
-    if (c >= u_cascades || p.y >= 1.0) {
+    if (c >= u_shadow_view.x || p.y >= 1.0) {
         o_color = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }
-    if (((u_drawn >> c) & 1) == 0) {  // no casters: not drawn this frame, read as lit
+    if (((u_shadow_view.y >> c) & 1) == 0) {  // no casters: not drawn this frame, read as lit
         o_color = vec4(vec3(0.3), 1.0);
         return;
     }

@@ -11,14 +11,7 @@
 #include "../../../renderer/shaders/counters.glsl"
 #include "weather_common.glsl"
 
-layout(location = 0) uniform ivec4 u_box_min;  // the box's min field cell (wrapped), cells per side
-layout(location = 1) uniform ivec4 u_layout;   // cells from the camera's to the box edge, drops drawn per cell, count (1), unused
-layout(location = 2) uniform vec4 u_frac;      // camera inside its cell (0..1) xyz, cell size (m)
-layout(location = 3) uniform vec4 u_motion;    // drop velocity relative to the camera (m/s), streak time (s)
-layout(location = 4) uniform vec4 u_shape;     // radius (m), near fade (m), drop width (m), intensity x drops per cell
-layout(location = 5) uniform vec4 u_ambient;   // sky light a drop sends back (radiance rgb), opacity
-layout(location = 6) uniform vec4 u_sun;       // sun light a drop sends back (radiance rgb), unused
-layout(location = 7) uniform vec4 u_sway;      // snow: amplitude (m), phase (rad), angular rate (rad/s), unused
+#include "weather_rain_block.glsl"
 
 layout(std430, binding = BINDING_COUNTERS) buffer Counters { uint u_count_lo; uint u_count_hi; };
 layout(std430, binding = BINDING_WEATHER_CELLS) readonly buffer Cells { uint u_cells[]; };  // o.x + cells (o.y + cells o.z)

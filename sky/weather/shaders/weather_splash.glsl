@@ -8,18 +8,7 @@
 #include "../../../terrain/shaders/tiles.glsl"
 #include "weather_common.glsl"
 
-layout(location = 0) uniform ivec2 u_box;      // the box's min ground cell x, z (wrapped)
-layout(location = 1) uniform ivec4 u_layout;   // cells per side, cells from the camera's to the edge, slots drawn per cell, count (1)
-layout(location = 2) uniform vec4 u_cycle;     // camera inside its cell (0..1) x, z, cycle fraction, slots kept (j + keep below it)
-layout(location = 3) uniform uint u_cycle_index;  // floor(t / period), low 32 bits
-layout(location = 4) uniform vec4 u_look;      // crown radius (m), draw radius (m), opacity, cell size (m)
-layout(location = 5) uniform vec4 u_ambient;   // sky light sent back (radiance rgb), unused
-layout(location = 6) uniform vec4 u_sun;       // sun light sent back (radiance rgb), unused
-layout(location = 7) uniform vec2 u_map_min;   // camera-relative x, z of heightmap texel (0, 0) (m)
-layout(location = 8) uniform vec2 u_texel_m;   // metres between samples in x, z
-layout(location = 9) uniform vec2 u_height_map;  // height = offset + scale * sample: (scale, offset - camera y)
-layout(location = 10) uniform ivec4 u_tiles;
-layout(location = 11) uniform vec4 u_tile_layer;
+#include "weather_splash_block.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2DArray u_height;
 
 layout(std430, binding = BINDING_COUNTERS) buffer Counters { uint u_count_lo; uint u_count_hi; };
@@ -38,7 +27,7 @@ void main() {
     uint h = weatherHash(cell.x, cell.y, uint(j), 0x51ab5u);
     float u = u_cycle.z + weatherRandom(h, 0u);
     float whole = floor(u), age = u - whole;
-    uint cycle = u_cycle_index + uint(whole);
+    uint cycle = u_cycle_index.x + uint(whole);
     uint hk = weatherHash(cell.x, cell.y, uint(j), cycle);
     vec2 xz = (vec2(o - u_layout.y) + vec2(weatherRandom(hk, 1u), weatherRandom(hk, 2u)) - u_cycle.xy) * u_look.w;
     float keep = weatherRandom(hk, 3u);
