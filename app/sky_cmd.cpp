@@ -1,9 +1,8 @@
 // `vista sky`. The GPU path renders, for each geometry, a 3x3 frame of the sky alone (no
 // terrain, water, clouds, moon, stars or height fog) with a 0.1 deg field of view centred on
-// the view direction, the sun at azimuth 0 and the sun disk's radius set to 0 (the sky pass
-// draws no disk then), and averages its
-// HDR pixels (the dither's +-0.2 % averages out); HDR units become cd/m^2 through
-// luxPerHdrUnit() after the frame's pre-exposure is divided out. The reference path builds the
+// the view direction, the sun at azimuth 0, the sun disk's radius set to 0 (the sky pass
+// draws no disk then) and [sky] planet_ground set by --ground, and averages its HDR pixels
+// (the dither's +-0.2 % averages out); HDR units become cd/m^2 through luxPerHdrUnit() after the frame's pre-exposure is divided out. The reference path builds the
 // spectral reference once (about a minute on two cores) and integrates each row.
 #include "app/sky_cmd.h"
 
@@ -31,7 +30,7 @@ namespace {
 constexpr int kSkyReferenceMsAltitudes = 16, kSkyReferenceMsMuS = 64;
 
 // The sky alone, as the GPU path renders it for one geometry.
-Settings skyAlone(const Settings& scene, const SkyGeometry& g) {
+Settings skyAlone(const Settings& scene, const SkyGeometry& g, bool ground) {
     Settings s = scene;
     s.terrain.enabled = false;
     s.water.enabled = false;
@@ -48,6 +47,7 @@ Settings skyAlone(const Settings& scene, const SkyGeometry& g) {
     s.sky.sun_azimuth_deg = 0.0f;
     s.sky.sun_elevation_deg = float(90.0 - g.sun_zenith_deg);
     s.sky.sun_angular_radius_deg = 0.0f;  // no disk (below the key's range on purpose: not a scene)
+    s.sky.planet_ground = ground;         // the sunlit ground at a ray's end only with --ground
     return s;
 }
 
@@ -70,7 +70,7 @@ std::vector<SkyColour> gpuRadiance(const Settings& scene, const SkyCommandOption
     FrameRequest request;
     request.capture_hdr = &hdr;
     for (const SkyGeometry& g : o.geometries) {
-        Settings s = skyAlone(scene, g);
+        Settings s = skyAlone(scene, g, o.ground);
         ViewParams view{{0.0, g.altitude_m, 0.0}, g.view_azimuth_deg, 90.0 - g.view_zenith_deg, 0.1, 0.1, kSize, kSize};
         const FrameReport report = renderer.render(s, view, 0.0, request);
         const double pre = report.counters.count("sky.pre_exposure") ? report.counters.at("sky.pre_exposure") : 1.0;
@@ -230,17 +230,6 @@ int runSkyCli(const Settings& scene, const SkyCliArgs& a) {
         if (!error.empty()) return fail(2, "sky: --in: " + error);
         if (!parseSkyGeometries(text, a.in, p, o.geometries, error)) return fail(2, "sky: " + error);
     }
-    // The sky pass adds the sunlit ground wherever a ray meets the planet: the GPU path cannot
-    // leave it out.
-    if (!o.reference && !o.ground)
-        for (std::size_t i = 0; i < o.geometries.size(); ++i) {
-            const SkyGeometry& g = o.geometries[i];
-            glm::dvec3 camera = planetFromWorld(p, glm::dvec3(0.0, g.altitude_m, 0.0));
-            if (atmosphereSegment(p, camera, viewDirectionFromAngles(g.view_zenith_deg, g.view_azimuth_deg)).ends_on_ground)
-                return fail(2, "sky: geometry " + std::to_string(i + 1) + " (view_zenith_deg = " + formatNumber(g.view_zenith_deg) +
-                                   "): the ray ends on the ground, where the GPU path always adds the sunlit ground; "
-                                   "accepted with --ground, or with --reference (in-scattering alone)");
-        }
     return runSky(scene, o);
 }
 

@@ -2,8 +2,8 @@
 // azimuth from the sun) in physical units: linear sRGB scaled to cd/m^2 and luminance in
 // cd/m^2, from the GPU path (the renderer's LUTs, a tiny frame per geometry) or, with
 // --reference, from the spectral CPU reference (sky/atmosphere_spectral.h). The sun disk is
-// never included; the sunlit ground at a ray's end only with --ground (the GPU path, whose sky
-// pass always draws it, accepts a ray that ends on the ground only with --ground).
+// never included; the sunlit ground at a ray's end only with --ground (both paths; the GPU
+// path's sky pass leaves it out through [sky] planet_ground).
 #pragma once
 
 #include "app/gl_context.h"

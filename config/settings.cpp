@@ -236,6 +236,9 @@ void describe(SettingsVisitor& v, SkySettings& s) {
     v.field({"ozone_center_km", "km", "altitude of the ozone peak"}, s.ozone_center_km, 0.0f, 1000.0f);
     v.field({"ozone_half_width_km", "km", "half width of the ozone tent (0: no ozone)"}, s.ozone_half_width_km, 0.0f, 1000.0f);
     v.field({"ground_albedo", "", "ground reflectance seen by multiple scattering"}, s.ground_albedo, 0.0f, 1.0f);
+    v.field({"planet_ground", "", "draw the sunlit planet ground where a view ray meets it behind everything drawn "
+                                  "(off: the sky's in-scattering alone, as vista sky without --ground)"},
+            s.planet_ground);
     v.field({"transmittance_width", "texels", "transmittance LUT size along mu"}, s.transmittance_width, 16, 1024);
     v.field({"transmittance_height", "texels", "transmittance LUT size along altitude"}, s.transmittance_height, 8, 512);
     v.field({"transmittance_steps", "", "integration steps per transmittance texel"}, s.transmittance_steps, 4, 512);

@@ -226,6 +226,9 @@ struct SkySettings {
     float ozone_center_km = 25.0f;          //!< km, peak of the tent profile, 0..1000
     float ozone_half_width_km = 15.0f;      //!< km, 0 disables ozone, 0..1000
     glm::vec3 ground_albedo{0.1f, 0.1f, 0.1f};  //!< Lambertian, for multiple scattering, 0..1
+    //! "sky.atmosphere" draws the sunlit ground (ground_albedo) where a view ray below the horizon
+    //! meets the planet and nothing is drawn (terrain, water); off: in-scattering alone (vista sky)
+    bool planet_ground = true;
     // Quality knobs (vista bench sky measures them; defaults sit on the knee of error vs cost).
     int transmittance_width = 256;   //!< texels along mu, 16..1024
     int transmittance_height = 64;   //!< texels along altitude, 8..512

@@ -63,7 +63,9 @@ struct SkyAtmosphere::Uniforms {
     glm::ivec4 sizes, sizes2;
     glm::vec4 gl[16];
     glm::ivec4 gl_count;
+    glm::vec4 sun_depth[SKY_SUNLIGHT_WAVELENGTHS], sun_rgb[SKY_SUNLIGHT_WAVELENGTHS];
 };
+static_assert(SKY_SUNLIGHT_WAVELENGTHS == kSunlightWavelengths, "sky_bindings.glsl and atmosphere_spectral.h disagree");
 
 glm::dvec3 sunDirection(const SkySettings& sky) {
     if (sky.sun_mode == SunMode::Time) return sunPosition(sky.latitude_deg, sky.day_of_year, sky.time_of_day_h).direction;
@@ -138,6 +140,7 @@ AtmosphereParams atmosphereParams(const SkySettings& s) {
 ProgramList skyPrograms() {
     return {{"sky/shaders/transmittance_lut.glsl", {}}, {"sky/shaders/multiscatter_lut.glsl", {}},
             {"sky/shaders/sky_view_lut.glsl", {}},      {"sky/shaders/sky.glsl", {}},
+            {"sky/shaders/sky.glsl", {"SKY_NO_GROUND"}},
             {"sky/shaders/aerial_volume.glsl", {}},     {"sky/shaders/aerial.glsl", {}}};
 }
 
@@ -167,7 +170,7 @@ void SkyAtmosphere::setCamera(Uniforms& u, const AtmosphereParams& p, double alt
 }
 
 void SkyAtmosphere::upload(const Uniforms& u) {
-    static_assert(sizeof(Uniforms) == 624, "Uniforms must match the std140 block");
+    static_assert(sizeof(Uniforms) == 624 + 2 * 16 * SKY_SUNLIGHT_WAVELENGTHS, "Uniforms must match the std140 block");
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SKY_BINDING_ATMOSPHERE, uniforms_.id());
 }
@@ -206,6 +209,11 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
                         float(kNightFloorLux / kSolarIlluminanceLux / std::numbers::pi) * sky.sun_illuminance);
     const glm::dmat3 colour = skyColourMatrix(sun.y) * double(sky.sun_illuminance);
     for (int i = 0; i < 3; ++i) u.colour[i] = glm::vec4(glm::vec3(colour[i]), 0.0f);
+    const SunlightConversion sunlight = sunlightConversion(p);
+    for (int i = 0; i < kSunlightWavelengths; ++i) {
+        u.sun_depth[i] = glm::vec4(glm::vec3(sunlight.depth[std::size_t(i)]), 0.0f);
+        u.sun_rgb[i] = glm::vec4(glm::vec3(sunlight.rgb[std::size_t(i)] * double(sky.sun_illuminance)), 0.0f);
+    }
     const glm::dmat3 celestial = glm::transpose(celestialFromWorld(sky));  // rows of celestialFromWorld
     for (int i = 0; i < 3; ++i) u.celestial[i] = glm::vec4(glm::vec3(celestial[i]), 0.0f);
     u.sizes = {sky.transmittance_width, sky.transmittance_height, sky.multiscatter_size, sky.sky_view_width};
@@ -304,6 +312,7 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
     frame_multiscatter_ = multiscatter;
     frame_sky_view_ = sky_view;
     frame_in_space_ = in_space;
+    frame_planet_ground_ = sky.planet_ground;
     frame_aerial_ = AerialVolume{};
     if (!frame_u_) frame_u_ = std::make_unique<Uniforms>();
     *frame_u_ = u;
@@ -336,12 +345,13 @@ void SkyAtmosphere::addSkyPass(FrameGraph& graph, const RenderContext& rc, Scene
             data.sky_view = b.read(sky_view);
             data.hdr = b.write(targets.hdr);
         },
-        [this, &rc, u](const Data& data, PassContext& ctx) {
+        [this, &rc, u, ground = frame_planet_ground_](const Data& data, PassContext& ctx) {
             upload(u);
             const TextureDesc& desc = ctx.desc(data.hdr);
             GLuint depth = data.depth.valid() ? ctx.texture(data.depth) : 0;
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, depth), desc.width, desc.height);
-            glUseProgram(rc.shaders.id("sky/shaders/sky.glsl"));
+            glUseProgram(rc.shaders.id(ground ? ProgramKey{"sky/shaders/sky.glsl", {}}
+                                              : ProgramKey{"sky/shaders/sky.glsl", {"SKY_NO_GROUND"}}));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
             glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));

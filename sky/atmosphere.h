@@ -108,6 +108,7 @@ private:
     TextureHandle frame_transmittance_, frame_multiscatter_, frame_sky_view_;
     std::unique_ptr<Uniforms> frame_u_;  // this frame's block (addLutPasses to addScenePasses)
     bool frame_in_space_ = false;
+    bool frame_planet_ground_ = true;  // this frame's [sky] planet_ground (the sky pass's variant)
     AerialVolume frame_aerial_;  // this frame's volume (addAerialPasses)
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for

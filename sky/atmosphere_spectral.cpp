@@ -14,6 +14,8 @@
 //   293 K, sampled every 10 nm (the values Bruneton 2017 uses for its ozone layer).
 #include "sky/atmosphere_spectral.h"
 
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
@@ -293,6 +295,57 @@ ErrorStats errorStats(std::vector<double> errors) {
     s.p95 = at(0.95);
     s.max = errors.back();
     return s;
+}
+
+SunlightConversion sunlightConversion(const AtmosphereParams& p) {
+    // A: the samples' optical depth per unit of each column (rows: samples; columns: Rayleigh,
+    // Mie, ozone). A species with no extinction in any sample (no ozone, say) has no column to
+    // find and none to spend, so the pseudo-inverse (Tikhonov, a 1e-12 share of the trace) drops it.
+    glm::dmat3 a;  // glm: a[column][row]
+    for (int k = 0; k < 3; ++k) {
+        a[0][k] = p.rayleigh_scattering[k];
+        a[1][k] = p.mie_extinction[k];
+        a[2][k] = p.ozone_absorption[k];
+    }
+    glm::dmat3 ata = glm::transpose(a) * a;
+    const double eps = 1e-12 * (ata[0][0] + ata[1][1] + ata[2][2]) + 1e-300;
+    for (int k = 0; k < 3; ++k) ata[k][k] += eps;
+    const glm::dmat3 columns_from_depth = glm::inverse(ata) * glm::transpose(a);  // C = this * tau_samples
+    SunlightConversion c;
+    glm::dvec3 sum_xyz(0.0);
+    std::array<glm::dvec3, kSunlightWavelengths> xyz{};
+    for (int i = 0; i < kSunlightWavelengths; ++i) {
+        const SpectralSample& s = spectralTable()[std::size_t(2 * i)];
+        const AtmosphereParams w = paramsAtWavelengths(p, glm::dvec3(s.wavelength_nm));
+        const glm::dvec3 b(w.rayleigh_scattering.x, w.mie_extinction.x, w.ozone_absorption.x);
+        c.depth[std::size_t(i)] = glm::transpose(columns_from_depth) * b;  // tau_i = b . C = (M^T b) . tau_samples
+        xyz[std::size_t(i)] = s.cmf * s.solar_irradiance;
+        sum_xyz += xyz[std::size_t(i)];
+    }
+    for (int i = 0; i < kSunlightWavelengths; ++i) c.rgb[std::size_t(i)] = linearSrgbFromXyz(xyz[std::size_t(i)] / sum_xyz.y);
+    return c;
+}
+
+glm::dvec3 sunlightRgb(const SunlightConversion& c, glm::dvec3 t) {
+    const glm::dvec3 depth = -glm::log(glm::max(t, glm::dvec3(1e-300)));
+    glm::dvec3 rgb(0.0);
+    for (int i = 0; i < kSunlightWavelengths; ++i)
+        rgb += c.rgb[std::size_t(i)] * std::exp(-std::max(glm::dot(c.depth[std::size_t(i)], depth), 0.0));
+    return rgb;
+}
+
+SkyColour spectralSunColour(const AtmosphereParams& base, double altitude_m, glm::dvec3 sun_dir, int stride,
+                            int transmittance_steps) {
+    stride = std::max(stride, 1);
+    glm::dvec3 xyz(0.0);
+    const double dl = kSpectralTableStepNm * stride;
+    for (int i = 0; i < kSpectralTableSize; i += stride) {
+        const SpectralSample& s = spectralTable()[std::size_t(i)];
+        const AtmosphereParams w = paramsAtWavelengths(base, glm::dvec3(s.wavelength_nm));
+        const double t = sunTransmittance(w, glm::dvec3(0.0, altitude_m, 0.0), sun_dir, transmittance_steps).x;
+        xyz += kLuminousEfficacy * s.cmf * s.solar_irradiance * dl * t;
+    }
+    return {linearSrgbFromXyz(xyz), xyz.y};
 }
 
 }  // namespace vista

@@ -107,6 +107,31 @@ const std::array<double, kSkyColourZenithCount>& skyColourZenithsDeg();
 glm::dmat3 skyColourMatrixAt(int zenith_index);
 glm::dmat3 skyColourMatrix(double sun_mu);  // sun_mu: cos of the sun's zenith angle
 
+// The colour of direct sunlight after the atmosphere, from the three transmittance samples the
+// GPU path has (680/550/440 nm). Along any path the model's transmittance is exp(-tau) with
+// tau(lambda) = Rayleigh(lambda) C_R + Mie C_M + ozone(lambda) C_O for three columns; Mie (and
+// the height fog, and the grey share of the disk above the horizon) is grey. So the three samples'
+// optical depths give the three columns exactly, and the columns give tau at every wavelength of
+// the spectral reference: tau(lambda) = depth[i] . (-log T_samples). The transmitted colour is then
+// sum_i rgb[i] exp(-tau_i), the spectral reference's sum (solar spectrum, CIE 1931, linear sRGB).
+// Products of transmittances (a ray to the ground, then to the sun) are paths too. Exact for the
+// model, up to the float LUT on the GPU; 21 exponentials per evaluation.
+inline constexpr int kSunlightWavelengths = 21;  // the reference's stride 2: 380..780 nm every 20 nm
+struct SunlightConversion {
+    std::array<glm::dvec3, kSunlightWavelengths> depth{};  //!< tau_i per unit optical depth of each sample
+    std::array<glm::dvec3, kSunlightWavelengths> rgb{};    //!< linear sRGB, in units of the solar illuminance
+};
+// For the atmosphere p (its own three channel coefficients); sum rgb has luminance 1 (the
+// unattenuated sun: linear sRGB about (1.09, 0.98, 0.96)).
+SunlightConversion sunlightConversion(const AtmosphereParams& p);
+// Linear sRGB of sunlight (units of the solar illuminance) after a path of transmittance t.
+glm::dvec3 sunlightRgb(const SunlightConversion& c, glm::dvec3 t);
+
+// The spectral reference's direct sun at altitude_m (lux, linear sRGB scaled to luminance): the
+// solar spectrum times the transmittance at each of the reference's wavelengths (no tables).
+SkyColour spectralSunColour(const AtmosphereParams& base, double altitude_m, glm::dvec3 sun_dir, int stride = 2,
+                            int transmittance_steps = 64);
+
 // One geometry of the agreement tables and the fit.
 struct SkyGeometry {
     double altitude_m, sun_zenith_deg, view_zenith_deg, view_azimuth_deg;

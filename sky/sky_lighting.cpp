@@ -5,6 +5,7 @@
 #include "sky/sky_lighting.h"
 
 #include "sky/atmosphere.h"
+#include "sky/atmosphere_spectral.h"
 #include "sky/night_light.h"
 
 #include <glm/geometric.hpp>
@@ -61,16 +62,19 @@ const SkyLighting& SkyLightingCache::get(const SkySettings& sky, const glm::dvec
     if (!(valid_ && sun == unit_.sun_direction && altitude == last_altitude_m_ && moon == last_moon_ &&
           sky.moon == last_moon_on_)) {
         const glm::dvec3 camera{0.0, altitude, 0.0};
+        // Linear sRGB as the sky pass draws it: the direct sun (and the moon's sunlight) through
+        // sunlightRgb(), the skylight through the sky's colour matrix at this sun.
+        const SunlightConversion sunlight = sunlightConversion(p);
         unit_.sun_direction = sun;
-        unit_.sun_illuminance = sunIrradiance(p, camera, sun, kSteps.transmittance);
-        unit_.sky_irradiance_up =
-            skyIrradianceUp(p, camera, sun, kSteps, table_.get(), kIrradiancePolar, kIrradianceAzimuth);
+        unit_.sun_illuminance = sunlightRgb(sunlight, sunIrradiance(p, camera, sun, kSteps.transmittance));
+        unit_.sky_irradiance_up = skyColourMatrix(sun.y) * skyIrradianceUp(p, camera, sun, kSteps, table_.get(),
+                                                                           kIrradiancePolar, kIrradianceAzimuth);
         // The moon: its phase from the elongation, through the atmosphere as the sun is (the
         // same transmittance and fraction of the disk above the horizon; the radii differ by 3%).
         unit_.moon_direction = moon;
         const double elongation = std::acos(std::clamp(glm::dot(sun, moon), -1.0, 1.0));
         unit_.moon_illuminance = sky.moon ? moonIlluminanceFraction(elongation) *
-                                                sunIrradiance(p, camera, moon, kSteps.transmittance)
+                                                sunlightRgb(sunlight, sunIrradiance(p, camera, moon, kSteps.transmittance))
                                           : glm::dvec3(0.0);
         unit_.night_irradiance_up = glm::dvec3(kNightFloorLux / kSolarIlluminanceLux);
         last_altitude_m_ = altitude;

@@ -6,10 +6,11 @@
 // starlight and airglow (sky/night_light.h) join them; the moon becomes the key light, the one
 // directional light the lighting passes shade, once it gives more than the sun.
 //
-// Units: HDR units, the scale of [sky] sun_illuminance (the solar irradiance at the top of the
-// atmosphere, per RGB sample at 680/550/440 nm). A surface facing the sun outside the
-// atmosphere receives sun_illuminance in every channel; its radiance as drawn by the sky pass
-// is in the same units per steradian.
+// Units: HDR linear sRGB, the scale of [sky] sun_illuminance (the solar illuminance at the top of
+// the atmosphere). A surface facing the sun outside the atmosphere receives the solar spectrum's
+// colour at luminance sun_illuminance (about 1.09, 0.98, 0.96 times it); the atmosphere's three
+// samples become colour as in the sky pass (sky/atmosphere_spectral.h: sunlightRgb() for the
+// direct sun and the moon's sunlight, skyColourMatrix() for the skylight).
 #pragma once
 
 #include "config/settings.h"
@@ -24,8 +25,8 @@ namespace vista {
 
 struct SkyLighting {
     glm::dvec3 sun_direction{0.0, 1.0, 0.0};  //!< unit, towards the sun, world (y up, -z north)
-    //! Irradiance on a surface facing the sun at the camera: sun_illuminance * atmospheric
-    //! transmittance * the fraction of the sun's disk above the horizon (0 once it has set).
+    //! Irradiance on a surface facing the sun at the camera: sun_illuminance * the colour of the
+    //! sunlight after the atmosphere's transmittance * the fraction of the sun's disk above the horizon (0 once it has set).
     glm::dvec3 sun_illuminance{0.0};
     //! Irradiance from the whole sky (no sun disk) on an up-facing surface at the camera,
     //! cosine-weighted; a Lambertian surface of albedo a reflects a * this / pi.

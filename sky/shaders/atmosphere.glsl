@@ -32,6 +32,8 @@ layout(std140, binding = SKY_ATMOSPHERE_BLOCK) uniform AtmosphereUniforms {
     ivec4 a_sizes2;        // sky-view h, transmittance steps, multiscatter steps, sky-view steps
     vec4 a_gl[16];         // x Gauss-Legendre node on [0, 1], y weight (multiple-scattering sphere)
     ivec4 a_gl_count;      // x polar nodes, y azimuth nodes
+    vec4 a_sun_depth[SKY_SUNLIGHT_WAVELENGTHS];  // xyz: optical depth per unit of each sample's (sunlightRgb)
+    vec4 a_sun_rgb[SKY_SUNLIGHT_WAVELENGTHS];    // xyz: linear sRGB of the sun's share, HDR units
 };
 
 #ifndef VISTA_PI_DEFINED  // brdf.glsl and atmosphere.glsl both define it
@@ -46,6 +48,18 @@ float bottomR() { return a_radii.x; }
 // (sky/atmosphere_spectral.h skyColourMatrix()) times the sun illuminance.
 vec3 skyRgb(vec3 samples) { return mat3(a_colour[0].xyz, a_colour[1].xyz, a_colour[2].xyz) * samples; }
 float topR() { return a_radii.y; }
+
+// Direct sunlight in HDR linear sRGB after a path of transmittance t (the three samples; a
+// product of paths is a path): the samples' optical depths give the path's Rayleigh, Mie and
+// ozone columns, which give the optical depth at each of the spectral reference's wavelengths
+// (sky/atmosphere_spectral.h sunlightConversion()). t = 1 is the unattenuated sun.
+vec3 sunlightRgb(vec3 t) {
+    vec3 depth = -log(max(t, vec3(1e-30)));
+    vec3 rgb = vec3(0.0);
+    for (int i = 0; i < SKY_SUNLIGHT_WAVELENGTHS; ++i)
+        rgb += a_sun_rgb[i].xyz * exp(-max(dot(a_sun_depth[i].xyz, depth), 0.0));
+    return rgb;
+}
 
 struct Medium {
     vec3 rayleigh, mie, extinction;

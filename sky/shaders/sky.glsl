@@ -36,20 +36,22 @@ float hash12(vec2 p) {
 // from the same direction as the earth: the phase follows from the angle between them), with
 // the Lommel-Seeliger law that makes the full moon a flat disk: L = E albedo / pi *
 // 2 cos_i / (cos_i + cos_e). cover: the fraction of the pixel the disk covers (antialiased edge).
-vec3 moonRadiance(vec3 dir, vec3 sun, float pixel_rad, out float cover) {
+// Grey, per unit of the solar irradiance: the caller multiplies by the sunlight's colour through
+// the air in front of the moon (sunlightRgb).
+float moonRadiance(vec3 dir, vec3 sun, float pixel_rad, out float cover) {
     vec3 m = a_moon.xyz;
     float radius = a_moon.w;
     float cos_angle = dot(dir, m);
     cover = 0.0;
-    if (cos_angle < cos(radius + 2.0 * pixel_rad)) return vec3(0.0);
+    if (cos_angle < cos(radius + 2.0 * pixel_rad)) return 0.0;
     vec3 side = dir - m * cos_angle;
     float angle = atan(length(side), cos_angle);
     cover = clamp((radius - angle) / max(pixel_rad, 1e-7) + 0.5, 0.0, 1.0);
     float x = min(angle / radius, 1.0);
     vec3 n = -m * sqrt(1.0 - x * x) + safeNormalize(side) * x;  // the visible hemisphere's normal
     float cos_i = dot(n, sun), cos_e = max(sqrt(1.0 - x * x), 1e-3);
-    if (cos_i <= 0.0) return vec3(0.0);
-    return cover * a_solar.xyz * (a_night.y / PI) * 2.0 * cos_i / (cos_i + cos_e);
+    if (cos_i <= 0.0) return 0.0;
+    return cover * (a_night.y / PI) * 2.0 * cos_i / (cos_i + cos_e);
 }
 
 vec3 hash33(vec3 p) {
@@ -143,11 +145,14 @@ void main() {
     }
     radiance = skyRgb(radiance);
     if (hits_ground) {
-        // Sunlit ground seen through the atmosphere (no skylight on it).
+#ifndef SKY_NO_GROUND
+        // Sunlit ground seen through the atmosphere (no skylight on it); the sunlight's colour
+        // after both paths, the sun's to the ground and the ground's to the camera.
         float mu_s_g = clamp((r0 * mu_s0 + len * nu) / R, -1.0, 1.0);
         vec3 t_view = transmittanceToGround(r0, mu0, len);
         if (mu_s_g > 0.0)
-            radiance += t_view * (a_albedo.xyz / PI) * mu_s_g * transmittanceToTop(R, mu_s_g) * a_solar.xyz;
+            radiance += (a_albedo.xyz / PI) * mu_s_g * sunlightRgb(t_view * transmittanceToTop(R, mu_s_g));
+#endif
     } else {
         // Transmittance to what lies beyond the atmosphere, fetched only where something does.
         vec3 t_view = vec3(1.0);
@@ -155,19 +160,21 @@ void main() {
         float sky_luminance = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
         // The moon in front of the sun and the stars (an eclipse shows its dark side).
         float moon_cover = 0.0;
-        vec3 moon = a_night.z > 0.5 ? moonRadiance(dir, sun, pixel_rad, moon_cover) : vec3(0.0);
+        float moon = a_night.z > 0.5 ? moonRadiance(dir, sun, pixel_rad, moon_cover) : 0.0;
         // The sun disk: I(c) = 1 - u (1 - c), c = cos of the angle from the limb's normal.
         float alpha = a_misc.z, u = a_misc.w;
         float cos_alpha = cos(alpha);
         bool stars_visible = a_night.x > 10.0 * sky_luminance && moon_cover < 1.0;
         if ((nu > cos_alpha || moon_cover > 0.0 || stars_visible) && r0 <= Rt) t_view = transmittanceToTop(r0, mu0);
+        // Sunlight through the air in front of the camera, in colour: the sun disk and the moon.
+        vec3 sunlight = (nu > cos_alpha || moon > 0.0) ? sunlightRgb(t_view) : vec3(0.0);
         if (nu > cos_alpha) {
             float x = safeSqrt(1.0 - nu * nu) / max(sin(alpha), 1e-6);
             float limb = 1.0 - u * (1.0 - safeSqrt(1.0 - x * x));
             float norm = 1.0 / (PI * alpha * alpha * (1.0 - u / 3.0));
-            radiance += (1.0 - moon_cover) * a_solar.xyz * t_view * limb * norm;
+            radiance += (1.0 - moon_cover) * sunlight * limb * norm;
         }
-        radiance += t_view * moon + a_night.w;  // airglow and unresolved starlight: the night's floor
+        radiance += sunlight * moon + a_night.w;  // airglow and unresolved starlight: the night's floor
         // Each star fades out as the sky behind it brightens from 1% to 10% of its own peak.
         if (stars_visible)
             radiance += t_view * (1.0 - moon_cover) * starField(dir, pixel_rad, sky_luminance);

@@ -11,6 +11,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -179,4 +180,62 @@ TEST_CASE("spectral: the stored sky colour matrices are the fit") {
     CHECK(skyColourMatrix(std::cos(glm::radians(95.0)))[0][0] == doctest::Approx(skyColourMatrixAt(kSkyColourZenithCount - 1)[0][0]));
     CHECK(skyColourMatrix(std::cos(glm::radians(30.0)))[1][1] ==
           doctest::Approx(0.5 * (skyColourMatrixAt(1)[1][1] + skyColourMatrixAt(2)[1][1])).epsilon(1e-6));
+}
+
+namespace {
+
+// Relative errors of a linear sRGB colour against another, as colourError().
+ColourError sunColourError(glm::dvec3 rgb, glm::dvec3 reference) {
+    return colourError(rgb, SkyColour{reference, srgbLuminance(reference)});
+}
+
+}  // namespace
+
+TEST_CASE("spectral: sunlightRgb() turns the three transmittance samples into the spectral reference's sun") {
+    const AtmosphereParams p;
+    const SunlightConversion conversion = sunlightConversion(p);
+    // The unattenuated sun: luminance 1, the solar spectrum's colour.
+    const glm::dvec3 top = sunlightRgb(conversion, glm::dvec3(1.0));
+    CHECK(srgbLuminance(top) == doctest::Approx(1.0).epsilon(1e-4));  // sRGB's luminance row is Y to 4 digits
+    CHECK(top.r / top.g == doctest::Approx(1.11).epsilon(0.02));
+    const double lux_per_unit = spectralSolarIlluminanceLux(2);
+    std::string table = "sun zenith, altitude: luminance new/old - 1, r/g and b/g error new / old (%)\n";
+    double worst_new = 0.0, worst_old_low_sun = 0.0;
+    for (double altitude : {0.0, 2000.0, 10000.0})
+        for (double zenith : {0.0, 60.0, 80.0, 85.0, 89.0}) {
+            const glm::dvec3 sun = sunDirectionFromZenith(zenith);
+            const glm::dvec3 t = sunTransmittance(p, glm::dvec3(0.0, altitude, 0.0), sun, 64);
+            const SkyColour reference = spectralSunColour(p, altitude, sun, 2, 64);
+            const glm::dvec3 now = sunlightRgb(conversion, t) * lux_per_unit;
+            const glm::dvec3 old = t * lux_per_unit;  // the samples read as linear sRGB under a white sun
+            const ColourError e_new = sunColourError(now, reference.rgb), e_old = sunColourError(old, reference.rgb);
+            worst_new = std::max({worst_new, e_new.luminance, e_new.r_over_g, e_new.b_over_g});
+            if (zenith >= 85.0) worst_old_low_sun = std::max({worst_old_low_sun, e_old.r_over_g, e_old.b_over_g});
+            char line[200];
+            std::snprintf(line, sizeof line, "%4.0f deg, %5.0f m: %+6.2f   %.4f / %.1f   %.4f / %.1f\n", zenith, altitude,
+                          100.0 * (srgbLuminance(now) / srgbLuminance(old) - 1.0), 100.0 * e_new.r_over_g,
+                          100.0 * e_old.r_over_g, 100.0 * e_new.b_over_g, 100.0 * e_old.b_over_g);
+            table += line;
+        }
+    MESSAGE(table);
+    // The conversion is exact for the model: only rounding separates it from the reference.
+    CHECK(worst_new < 1e-6);
+    // ... and the old reading is far off towards a low sun, so the check can tell them apart.
+    CHECK(worst_old_low_sun > 0.2);
+}
+
+TEST_CASE("spectral: sunlightRgb() without ozone, and in the planet's shadow") {
+    AtmosphereParams p;
+    p.ozone_absorption = glm::dvec3(0.0);
+    const SunlightConversion conversion = sunlightConversion(p);
+    const glm::dvec3 sun = sunDirectionFromZenith(80.0);
+    const glm::dvec3 now = sunlightRgb(conversion, sunTransmittance(p, glm::dvec3(0.0), sun, 64));
+    const SkyColour reference = spectralSunColour(p, 0.0, sun, 2, 64);
+    const ColourError e = sunColourError(now * spectralSolarIlluminanceLux(2), reference.rgb);
+    CHECK(e.luminance < 1e-6);
+    CHECK(e.r_over_g < 1e-6);
+    CHECK(e.b_over_g < 1e-6);
+    const glm::dvec3 dark = sunlightRgb(conversion, glm::dvec3(0.0));
+    CHECK(std::isfinite(dark.r + dark.g + dark.b));
+    CHECK(srgbLuminance(dark) < 1e-20);
 }

@@ -1,6 +1,8 @@
 // The sky's CPU outputs for the lighting: sun direction from the settings, and the cached
 // sun/sky light against the full-quality reference.
 #include "sky/atmosphere.h"
+#include "sky/atmosphere_spectral.h"
+#include "sky/night_light.h"
 #include "sky/sky_lighting.h"
 
 #include <doctest/doctest.h>
@@ -60,8 +62,10 @@ TEST_CASE("sky: skyLighting is close to the full reference and cached") {
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         glm::dvec3 sun = sunDirection(s);
         glm::dvec3 at{0.0, c.altitude, 0.0};
-        glm::dvec3 e_sun = 2.0 * sunIrradiance(p, at, sun);
-        glm::dvec3 e_sky = 2.0 * skyIrradianceUp(p, at, sun, {}, &table);
+        // In linear sRGB as the sky pass draws them: the sun through sunlightRgb(), the sky
+        // through its colour matrix.
+        glm::dvec3 e_sun = 2.0 * sunlightRgb(sunlightConversion(p), sunIrradiance(p, at, sun));
+        glm::dvec3 e_sky = 2.0 * (skyColourMatrix(sun.y) * skyIrradianceUp(p, at, sun, {}, &table));
         std::printf("sky lighting el %5.1f alt %7.0f: sun %.4g %.4g %.4g (ref %.4g), sky %.4g %.4g %.4g (ref %.4g %.4g %.4g), %.2f ms\n",
                     double(c.elevation), c.altitude, l.sun_illuminance.x, l.sun_illuminance.y, l.sun_illuminance.z,
                     e_sun.z, l.sky_irradiance_up.x, l.sky_irradiance_up.y, l.sky_irradiance_up.z, e_sky.x, e_sky.y,
@@ -71,6 +75,14 @@ TEST_CASE("sky: skyLighting is close to the full reference and cached") {
             CHECK(l.sun_illuminance[i] == doctest::Approx(e_sun[i]).epsilon(0.01).scale(1e-6));
             CHECK(l.sky_irradiance_up[i] == doctest::Approx(e_sky[i]).epsilon(0.03));
             CHECK(std::isfinite(l.sky_irradiance_up[i]));
+        }
+        // The sun's colour is the spectral reference's (the solar spectrum through the air).
+        if (c.elevation > 0.0f) {
+            const SkyColour spectral = spectralSunColour(p, c.altitude, sun);
+            const ColourError e = colourError(l.sun_illuminance * (kSolarIlluminanceLux / 2.0), spectral);
+            CHECK(e.r_over_g < 2e-3);
+            CHECK(e.b_over_g < 2e-3);
+            CHECK(e.luminance < 0.01);
         }
     }
     CHECK(cache.tableBuilds() == 1);

@@ -117,7 +117,7 @@ void main() {
             // The sun's light at the sample: through the atmosphere, then through the layer.
             float mu_s = dot(p, sun) / r;
             float r_km = r * 1e-3;
-            vec3 sun_light = a_solar.xyz * transmittanceToTop(r_km, mu_s) * sunVisible(r_km, mu_s);
+            vec3 sun_light = sunVisible(r_km, mu_s) > 0.0 ? sunlightRgb(transmittanceToTop(r_km, mu_s)) : vec3(0.0);
             float tau = 0.0;
             if (any(greaterThan(sun_light, vec3(0.0))))
                 for (int j = 0; j < c_count.y; ++j) {
