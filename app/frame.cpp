@@ -530,8 +530,11 @@ FrameRenderer::Casters FrameRenderer::addCullPasses(FrameGraph& graph, const Fra
         Grass& grass = grass_.use();
         grass.setWetness(weatherWetness(s.weather));
         const bool reach = grassInReach(*terrain_, s.terrain, s.grass, f.view.position);  // else nothing to draw
-        if (reach) c.blades = grass.addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass,
-                                                f.motion_dt_s);
+        // The blades' earlier bend only where motion vectors may run (a superset of addTemporalPasses').
+        const bool vectors = f.taa || request.velocity || (s.postfx.enabled && s.motion_blur.enabled);
+        if (reach)
+            c.blades = grass.addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass,
+                                         vectors ? f.motion_dt_s : 0.0);
         report.counters["grass.considered"] = reach ? double(grass.considered()) : 0.0;
     } else {
         grass_.release();  // a disabled feature keeps nothing allocated
