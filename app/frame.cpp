@@ -442,7 +442,7 @@ FrameReport FrameRenderer::render(const Settings& input, const ViewParams& view,
     addGeometryPasses(graph, f, casters, scene, report);
     addLightingPasses(graph, f, shadows, scene, request);
     addSkyAndTransparentPasses(graph, f, casters, shadows, scene, request, report);
-    addTemporalPasses(graph, f, scene, request, report);
+    addTemporalPasses(graph, f, casters, scene, request, report);
     addSceneReadbacks(graph, f, scene, request);
     const TextureHandle display = addPostAndDebugPasses(graph, f, scene, shadows, request);
     addOutputPasses(graph, f.rc, scene, display, request);
@@ -530,7 +530,11 @@ FrameRenderer::Casters FrameRenderer::addCullPasses(FrameGraph& graph, const Fra
         Grass& grass = grass_.use();
         grass.setWetness(weatherWetness(s.weather));
         const bool reach = grassInReach(*terrain_, s.terrain, s.grass, f.view.position);  // else nothing to draw
-        if (reach) c.blades = grass.addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass);
+        // The blades' earlier bend only where motion vectors may run (a superset of addTemporalPasses').
+        const bool vectors = f.taa || request.velocity || (s.postfx.enabled && s.motion_blur.enabled);
+        if (reach)
+            c.blades = grass.addCullPass(graph, rc, *terrain_, s.terrain, s.grass, counters_, request.count_grass,
+                                         vectors ? f.motion_dt_s : 0.0);
         report.counters["grass.considered"] = reach ? double(grass.considered()) : 0.0;
     } else {
         grass_.release();  // a disabled feature keeps nothing allocated
@@ -773,8 +777,8 @@ void FrameRenderer::addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTarg
     report.counters["lights.glow_dropped"] = double(lamp_glow_->stats().dropped);
 }
 
-void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
-                                      FrameReport& report) {
+void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, const Casters& casters, SceneTargets& scene,
+                                      const FrameRequest& request, FrameReport& report) {
     // The frame's motion vectors from the camera's motion since the previous frame (none on a cut).
     // Motion blur scales the same vectors by its shutter (the graph culls them when it adds no pass).
     const bool motion_blur = f.s.postfx.enabled && f.s.motion_blur.enabled &&
@@ -783,9 +787,13 @@ void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTa
     TextureHandle velocity;
     if ((f.taa || request.velocity || motion_blur) && scene.depth.valid())
         velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
-    // The sea's waves move on their own: their motion replaces the camera's where the sea is seen.
+    // The sea's waves and the grass in the wind move on their own: their motion replaces the
+    // camera's where they are seen.
     if (velocity.valid() && f.s.water.enabled && !f.shadow_view && water_.get() && !f.cut)
         velocity = water_->addVelocityPass(graph, f.rc, scene.depth, velocity,
+                                           previousClipFromRelative(f.previous_view, f.view));
+    if (velocity.valid() && casters.blades.valid() && !f.shadow_view && !f.cut)
+        velocity = grass_->addVelocityPass(graph, f.rc, f.s.grass, casters.blades, scene.depth, velocity,
                                            previousClipFromRelative(f.previous_view, f.view));
     scene.velocity = velocity;
     if (request.velocity && velocity.valid())

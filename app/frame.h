@@ -188,11 +188,12 @@ private:
                                     SceneTargets& scene, const FrameRequest& request, FrameReport& report);
     // What glass is lit by: the sun and sky, the local lights' forward lists, the sun's cascades.
     ForwardLight forwardLight(const Frame& f, const Shadows& shadows);
-    // Motion vectors and TAA (and the velocity readback a test asks for).
     // "lights.glow" over the fogged scene, when some light glows (else the feature is released).
     void addLampGlowPass(FrameGraph& graph, const Frame& f, SceneTargets& scene, FrameReport& report);
-    void addTemporalPasses(FrameGraph& graph, const Frame& f, SceneTargets& scene, const FrameRequest& request,
-                           FrameReport& report);
+    // Motion vectors (the camera's, then the sea's and the grass's own) and TAA (and the velocity
+    // readback a test asks for).
+    void addTemporalPasses(FrameGraph& graph, const Frame& f, const Casters& casters, SceneTargets& scene,
+                           const FrameRequest& request, FrameReport& report);
     // What a test reads of the scene besides the image: non-finite pixels, light heat, depth.
     void addSceneReadbacks(FrameGraph& graph, const Frame& f, const SceneTargets& scene, const FrameRequest& request);
     // The post chain, or the debug view in its place: the image shown.

@@ -1,8 +1,8 @@
 // The frame's motion vectors ("temporal.velocity", docs/temporal.md): each pixel's depth
 // reprojected into the previous frame by the camera's motion, built in double on the CPU
 // (renderer/temporal.h). One target every temporal consumer reads instead of reprojecting on
-// its own (TAA, motion blur). The sea adds its waves' own motion (terrain/water/water.h addVelocityPass);
-// grass wind and rain write none.
+// its own (TAA, motion blur). The sea adds its waves' own motion (terrain/water/water.h addVelocityPass)
+// and the grass its blades' motion in the wind (terrain/grass/grass.h addVelocityPass); rain writes none.
 //
 // RGBA32F: rg = this pixel's unjittered UV minus the UV its point had in the previous frame
 // (the previous position is uv - rg), b = that point's reversed-Z depth in the previous frame

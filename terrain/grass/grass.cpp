@@ -6,6 +6,8 @@
 #include "terrain/cdlod.h"
 #include "terrain/terrain.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,7 +26,9 @@ int farSegments(int near_segments) { return std::max(1, (near_segments + 1) / 2)
 
 ProgramList grassPrograms() {
     ProgramList programs = {
-        {"terrain/grass/shaders/grass.glsl", {}}, {"terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"}}};
+        {"terrain/grass/shaders/grass.glsl", {}},
+        {"terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"}},
+        {"terrain/grass/shaders/grass.glsl", {"GRASS_VELOCITY"}}};
     TerrainSettings ts;  // the cull with the height/slope rules, and with one and two splat images
     for (const char* splat : {"", "a.png", "a.png b.png"}) {
         ts.splat_map = splat;
@@ -85,7 +89,7 @@ void Grass::allocate(const GrassSettings& s) {
 }
 
 BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
-                                const GrassSettings& s, CounterReadback& counters, bool count) {
+                                const GrassSettings& s, CounterReadback& counters, bool count, double motion_dt_s) {
     allocate(s);
     const BufferHandle imported = graph.importBuffer("grass.blades", BufferDesc{std::size_t(blades_.size())}, blades_.id());
 
@@ -94,7 +98,7 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
     };
     const CullData& cull = graph.addPass<CullData>("grass.cull",
         [&](PassBuilder& b, CullData& d) { d.blades = b.write(imported); },
-        [this, &rc, &terrain, &ts, &s, &counters, count](const CullData&, PassContext&) {
+        [this, &rc, &terrain, &ts, &s, &counters, count, motion_dt_s](const CullData&, PassContext&) {
             const GrassLayout& l = layout_;
             const glm::dvec3 eye = rc.view.position;
             const glm::dvec2 eye_xz(eye.x, eye.z);
@@ -106,6 +110,8 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
             const glm::dvec3 rel = eye - ts.origin;
             const Frustum planes = frustumFromViewProj(glm::dmat4(rc.matrices.view_proj));
             const GrassWind w = grassWind(s, eye_xz, rc.time_s);
+            // The same wind field motion_dt_s earlier, sampled from this camera (grass.velocity).
+            const GrassWind before = grassWind(s, eye_xz, rc.time_s - motion_dt_s);
 
             const DrawCommand reset[2] = {{std::uint32_t(2 * s.segments + 1), 0, 0, 0},
                                           {std::uint32_t(2 * farSegments(s.segments) + 1), 0, 0, 0}};
@@ -133,7 +139,8 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
                                    float(planes[std::size_t(p)].z), float(planes[std::size_t(p)].w));
             glProgramUniform4f(program, 17, w.dir.x, w.dir.y, w.gust_origin.x, w.gust_origin.y);
             glProgramUniform4f(program, 18, w.inv_gust_scale, w.sway_phase, w.strength, w.gust);
-            glProgramUniform4f(program, 19, w.sway, 0.0f, 0.0f, 0.0f);
+            glProgramUniform4f(program, 19, w.sway, before.gust_origin.x, before.gust_origin.y,
+                               motion_dt_s > 0.0 ? before.sway_phase : -1.0f);
             glProgramUniform4f(program, 20, s.color.r, s.color.g, s.color.b, s.color_variation);
             glProgramUniform4f(program, 21, s.dry_color.r, s.dry_color.g, s.dry_color.b, s.dry_fraction);
             glProgramUniform4ui(program, 22, near_capacity_, far_capacity_, near_capacity_, count ? 1u : 0u);
@@ -173,6 +180,39 @@ void Grass::drawShadow(const RenderContext& rc, const GrassSettings& s, const gl
     glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
     glBindVertexArray(rc.empty_vao);
     drawLists(program, s);
+}
+
+TextureHandle Grass::addVelocityPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
+                                     TextureHandle depth, TextureHandle velocity, const glm::dmat4& prev_clip_from_relative) {
+    struct Data {
+        BufferHandle blades;
+        TextureHandle depth, velocity;
+    };
+    const glm::mat4 prev_clip(prev_clip_from_relative);
+    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    return graph.addPass<Data>("grass.velocity",
+        [&](PassBuilder& b, Data& d) {
+            d.blades = b.read(blades);
+            d.depth = b.read(depth);
+            d.velocity = b.write(velocity);
+        },
+        [this, &rc, &s, prev_clip, jitter](const Data& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.velocity);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}, ctx.texture(d.depth)), desc.width, desc.height);
+            const GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl", {"GRASS_VELOCITY"});
+            glUseProgram(program);
+            glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, glm::value_ptr(prev_clip));
+            glProgramUniform4fv(program, 5, 1, glm::value_ptr(jitter));
+            // Only where a blade is what the pixel shows (gl_Position is invariant).
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_EQUAL);
+            glDepthMask(GL_FALSE);
+            glBindVertexArray(rc.empty_vao);
+            drawLists(program, s);
+            glDepthMask(GL_TRUE);
+            glDepthFunc(GL_GREATER);
+            glDisable(GL_DEPTH_TEST);
+        }).velocity;
 }
 
 void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,

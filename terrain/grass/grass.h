@@ -26,11 +26,20 @@ class Grass {
 public:
     // "grass.cull": this frame's blades (before the shadow passes that draw them); returns the
     // blade list. count: add the blades drawn to the GPU counter "grass.blades" (CounterReadback).
+    // motion_dt_s: the time since the previous frame (0: none, a cut); each blade also keeps how
+    // the wind bent it then, for addVelocityPass.
     BufferHandle addCullPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain, const TerrainSettings& ts,
-                             const GrassSettings& s, CounterReadback& counters, bool count);
+                             const GrassSettings& s, CounterReadback& counters, bool count, double motion_dt_s = 0.0);
     // "grass.gbuffer": the culled blades into targets' G-buffer.
     void addGbufferPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
                         SceneTargets& targets);
+    // "grass.velocity": the blades' own motion in the wind written over the frame's motion vectors
+    // (renderer/velocity.h) where a blade is what the pixel shows (depth EQUAL to the blade's):
+    // each vertex also bent as motion_dt_s earlier (addCullPass) and projected by
+    // prev_clip_from_relative (renderer/temporal.h previousClipFromRelative), so the vector holds
+    // the wind's motion plus the camera's. Returns the new velocity handle.
+    TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
+                                  TextureHandle depth, TextureHandle velocity, const glm::dmat4& prev_clip_from_relative);
     // The culled blades depth-only (grass.glsl SHADOW_PASS) through matrix (camera-relative world
     // -> clip), into the bound target; for shadow passes that read the blade list.
     void drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const;

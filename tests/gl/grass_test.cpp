@@ -1,12 +1,14 @@
 // Grass under OSMesa: its passes run after the terrain with finite output; off (or without a
 // terrain) there is no grass pass and no buffer; the blades the GPU keeps are exactly the CPU
 // mirror's (placement, bend and wind, also 10^7 s in and 10,000 km from the origin), only
-// where the terrain is grass, and the same after moving away and back.
+// where the terrain is grass, and the same after moving away and back; the blades write their
+// motion in the wind into the motion vectors (grass.velocity), as the CPU wind says.
 #include "app/frame.h"
 #include "app/scene.h"
 #include "renderer_fixture.h"
 #include "terrain/grass/grass.h"
 #include "renderer/half.h"
+#include "renderer/temporal.h"
 #include "terrain/heightmap.h"
 #include "terrain/material_weights.h"
 
@@ -315,4 +317,102 @@ TEST_CASE("gl: blades cast into the sun cascades and the spot shadow atlas (cast
     CHECK(contains(spot_report.executed, "shadows.spot_atlas"));
     CHECK(spot_on < 0.97 * spot_off);
     std::printf("grass shadows: mean luminance sun %.4g (off %.4g), spot %.4g (off %.4g)\n", sun_on, sun_off, spot_on, spot_off);
+}
+
+TEST_CASE("gl: grass writes its blades' motion in the wind into the motion vectors, as the CPU wind says") {
+    // Two frames dt apart, the camera moving a little: where a blade is what a pixel shows, the
+    // motion vector is that blade point's motion (wind and camera), from the CPU mirror of the
+    // wind at t - dt. Wide, strongly swaying blades in a low view, so many pixels show one.
+    test::TempDir dir("grass-velocity");
+    auto meadow = writeMap(dir, "meadow.png", [](int, int) { return 0.3f; });
+    const double dt = 0.25;  // a slow frame rate: the tips move about a pixel
+    for (auto [origin, t] : {std::pair{glm::dvec3(0.0), 10.0}, std::pair{glm::dvec3(1.0e7, 0.0, -1.0e7), 1.0e7}}) {
+        CAPTURE(origin.x);
+        Settings s = grassScene(meadow);
+        s.terrain.origin = origin;
+        s.taa.enabled = false;  // no jitter: pixel centres are the unjittered positions
+        s.grass.blade_width_m = 0.2f;
+        s.grass.blade_height_m = 0.8f;
+        s.grass.sway_strength = 0.4f;
+        s.grass.sway_frequency_hz = 1.5f;
+        s.grass.gust_speed_m_s = 12.0f;
+        const double ground = origin.y + 0.3 * kHeightScale;
+        const ViewParams before{origin + glm::dvec3(-30.0, ground + 0.9, 10.0), 80.0, -20.0, 60.0, 0.05, 160, 90};
+        ViewParams view = before;
+        view.position += glm::dvec3(0.02, 0.0, 0.01);
+        view.yaw_deg += 0.2;
+        FrameRenderer& r = renderer();
+        REQUIRE(r.prepare(s).empty());
+        r.resetHistory();
+        r.render(s, before, t - dt, FrameRequest{});
+        std::vector<float> velocity, depth;
+        FrameRequest request;
+        request.velocity = &velocity;
+        request.depth = &depth;
+        const FrameReport report = r.render(s, view, t, request);
+        CHECK(contains(report.executed, "grass.velocity"));
+        REQUIRE(r.grass());
+        std::uint32_t draws[8] = {};
+        glGetNamedBufferSubData(r.grass()->drawBuffer(), 0, sizeof draws, draws);
+        std::vector<Blade> blades(draws[1]);  // the near list (s.grass.segments segments)
+        REQUIRE(blades.size() > 200);
+        glGetNamedBufferSubData(r.grass()->bladeBuffer(), 0, GLsizeiptr(blades.size() * sizeof(Blade)), blades.data());
+
+        const int w = view.width, h = view.height, n = s.grass.segments;
+        REQUIRE(velocity.size() == std::size_t(w * h * 4));
+        REQUIRE(depth.size() == std::size_t(w * h));
+        const glm::dmat4 vp(viewMatrices(view).view_proj);
+        const glm::dmat4 prev_clip = previousClipFromRelative(before, view);
+        const GrassWind wind_before = grassWind(s.grass, {view.position.x, view.position.z}, t - dt);
+        auto ndcOf = [](const glm::dvec4& c) { return glm::dvec2(c) / c.w; };
+        std::vector<double> errors, camera_only;
+        double worst_bend = 0.0, motion = 0.0;
+        for (const Blade& b : blades) {
+            // The bend dt earlier, per the CPU mirror, against the cull's (bend + change).
+            const GrassCandidate c = candidateOf(b, s.grass, view);
+            const glm::vec2 face{-std::sin(c.facing), std::cos(c.facing)};
+            const glm::dvec2 bend_before(face * (s.grass.curvature * c.curvature) +
+                                         grassWindTilt(wind_before, {b.root_width.x, b.root_width.z}, c.phase, c.frequency_step));
+            const glm::dvec2 bend_now(b.shape.z, b.shape.w);
+            const glm::dvec2 change(halfToFloat(std::uint16_t(b.look.w & 0xffffu)), halfToFloat(std::uint16_t(b.look.w >> 16)));
+            worst_bend = std::max(worst_bend, glm::length(bend_now + change - bend_before));
+            auto spine = [&](glm::dvec2 bend, int k) {
+                const double l = glm::length(bend);
+                return glm::dvec3(b.root_width) +
+                       grassBladePoint(b.shape.x, std::min(l, 1.4), l > 1e-6 ? bend / l : glm::dvec2(0.0, 1.0), n, k);
+            };
+            for (int k = 1; k < n; ++k) {  // the blade's midline at inner levels: inside its strip
+                const glm::dvec3 p = spine(bend_now, k);
+                const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+                if (!(clip.w > 0.0)) continue;
+                const glm::dvec2 ndc = ndcOf(clip);
+                const int x = int(std::floor((ndc.x * 0.5 + 0.5) * w)), row = int(std::floor((0.5 - ndc.y * 0.5) * h));
+                if (x < 0 || x >= w || row < 0 || row >= h) continue;
+                const std::size_t i = std::size_t(row * w + x);
+                const double d = clip.z / clip.w;
+                if (std::abs(depth[i] - d) > 0.01 * d) continue;  // another blade (or nothing) is seen there
+                const glm::dvec2 expect = (ndc - ndcOf(prev_clip * glm::dvec4(spine(bend_before, k), 1.0))) * 0.5;
+                const glm::dvec2 camera = (ndc - ndcOf(prev_clip * glm::dvec4(p, 1.0))) * 0.5;
+                const glm::dvec2 got(velocity[i * 4], velocity[i * 4 + 1]);
+                const glm::dvec2 px(w, h);
+                errors.push_back(glm::length((got - expect) * px));
+                camera_only.push_back(glm::length((camera - expect) * px));
+                motion += glm::length((expect - camera) * px);
+            }
+        }
+        REQUIRE(errors.size() > 100);
+        motion /= double(errors.size());
+        std::sort(errors.begin(), errors.end());
+        std::sort(camera_only.begin(), camera_only.end());
+        const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
+        const double camera_median = camera_only[camera_only.size() / 2];
+        MESSAGE("grass pixels " << errors.size() << ": bend dt earlier, GPU vs CPU " << worst_bend << " rad; wind motion "
+                                << motion << " px; error median " << median << " px, p90 " << p90
+                                << " px; camera-only vectors would be off by " << camera_median << " px (median)");
+        CHECK(worst_bend < 2e-3);       // rad, as the current bend in the mirror test
+        CHECK(motion > 0.3);            // the blades do move in the wind, beyond the camera's motion
+        CHECK(median < 0.1 * motion);   // camera-only vectors are off by about all of it
+        CHECK(p90 < 0.3 * motion);
+        CHECK(camera_median > 0.3 * motion);  // camera-only vectors would fail the median check 3x over
+    }
 }

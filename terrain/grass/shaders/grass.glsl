@@ -5,7 +5,12 @@
 // (grass_placement.cpp grassBladePoint is the CPU mirror). Writes the G-buffer like the
 // terrain; the shading normal is blended toward the terrain normal so a meadow seen from
 // above shades like the ground it covers. SHADOW_PASS: the same blades depth-only into a shadow
-// view (sun cascades, spot shadow atlas).
+// view (sun cascades, spot shadow atlas). GRASS_VELOCITY ("grass.velocity"): the blades' own
+// motion into the frame's motion vectors (renderer/velocity.h), drawn again with depth test EQUAL
+// (gl_Position is invariant) over the camera's vectors: each vertex also bent as one frame
+// earlier (the cull's bend change, look.w) and projected by u_prev_clip (the previous camera's
+// clip from this camera's relative space); rg = this pixel's unjittered UV minus that UV, b its
+// previous depth, a = 1.
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/gbuffer.glsl"
 #include "grass_common.glsl"
@@ -16,6 +21,11 @@ layout(location = 1) uniform uint u_first;       // index of this draw's first b
 layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, wetness (0 dry .. 1)
 
 #ifdef VERTEX_SHADER
+invariant gl_Position;
+#ifdef GRASS_VELOCITY
+layout(location = 16) uniform mat4 u_prev_clip;  // previous clip from this camera's relative space
+out vec4 v_prev_clip;
+#endif
 #ifdef SHADOW_PASS
 // A shadow view (sun cascade or spot tile): camera-relative world -> clip.
 layout(location = 16) uniform mat4 u_shadow_matrix;
@@ -23,6 +33,22 @@ layout(location = 16) uniform mat4 u_shadow_matrix;
 out vec3 v_normal;           // blade normal (world, one side)
 flat out vec3 v_ground;      // terrain normal
 out vec3 v_albedo;
+
+// Root to level `level` of a blade of length len bent by bend (direction and tip angle, rad):
+// the sum of rotated unit segments (length preserved).
+vec3 bladeSpine(float len, vec2 bend, int n, int level) {
+    float tip_angle = min(length(bend), 1.4);
+    vec2 dir = length(bend) > 1e-6 ? bend / length(bend) : vec2(0.0, 1.0);
+    vec3 bend_dir = vec3(dir.x, 0.0, dir.y);
+    vec3 p = vec3(0.0);
+    float seg = len / float(n);
+    for (int j = 0; j < level; ++j) {
+        float s = (float(j) + 0.5) / float(n);
+        float theta = tip_angle * s * sqrt(s);
+        p += seg * (vec3(0.0, cos(theta), 0.0) + sin(theta) * bend_dir);
+    }
+    return p;
+}
 
 void main() {
     GrassBlade b = u_blades[u_first + uint(gl_InstanceID)];
@@ -34,22 +60,15 @@ void main() {
     float tip_angle = min(length(b.shape.zw), 1.4);
     vec2 dir = length(b.shape.zw) > 1e-6 ? b.shape.zw / length(b.shape.zw) : vec2(0.0, 1.0);
     vec3 bend_dir = vec3(dir.x, 0.0, dir.y);
-    // Root to this level: the sum of rotated unit segments (length preserved).
-    vec3 p = vec3(0.0);
-    float seg = len / float(n);
-    float theta = 0.0;
-    for (int j = 0; j < level; ++j) {
-        float s = (float(j) + 0.5) / float(n);
-        theta = tip_angle * s * sqrt(s);
-        p += seg * (vec3(0.0, cos(theta), 0.0) + sin(theta) * bend_dir);
-    }
+    vec3 p = bladeSpine(len, b.shape.zw, n, level);
     float s_here = (float(min(level, n - 1)) + 0.5) / float(n);
     float theta_here = tip_angle * s_here * sqrt(s_here);
     vec3 tangent = vec3(0.0, cos(theta_here), 0.0) + sin(theta_here) * bend_dir;
     vec3 across = vec3(cos(b.shape.y), 0.0, sin(b.shape.y));
     float s = float(level) / float(n);
     float width = b.root_width.w * (1.0 - pow(s, 1.3));
-    p += across * (0.5 * side * width);
+    vec3 offset = across * (0.5 * side * width);
+    p += offset;
 
     vec3 normal = safeNormalize(cross(across, tangent));
     // A little roundness across the blade.
@@ -62,6 +81,24 @@ void main() {
 #else
     gl_Position = u_view_proj * vec4(b.root_width.xyz + p, 1.0);
 #endif
+#ifdef GRASS_VELOCITY
+    vec3 before = bladeSpine(len, b.shape.zw + unpackHalf2x16(b.look.w), n, level) + offset;
+    v_prev_clip = u_prev_clip * vec4(b.root_width.xyz + before, 1.0);
+#endif
+}
+#endif
+
+#if defined(FRAGMENT_SHADER) && defined(GRASS_VELOCITY)
+layout(location = 5) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
+in vec4 v_prev_clip;
+layout(location = 0) out vec4 o_velocity;
+void main() {
+    vec2 ndc = gl_FragCoord.xy * u_viewport.zw * 2.0 - 1.0 - u_jitter.xy;
+    o_velocity = vec4(0.0);
+    if (v_prev_clip.w > 1e-6) {
+        vec2 v = (ndc - v_prev_clip.xy / v_prev_clip.w) * 0.5;
+        if (!any(isnan(v)) && !any(isinf(v))) o_velocity = vec4(v, v_prev_clip.z / v_prev_clip.w, 1.0);
+    }
 }
 #endif
 
@@ -69,7 +106,7 @@ void main() {
 void main() {}  // depth only
 #endif
 
-#if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS)
+#if defined(FRAGMENT_SHADER) && !defined(SHADOW_PASS) && !defined(GRASS_VELOCITY)
 in vec3 v_normal;
 flat in vec3 v_ground;
 in vec3 v_albedo;

@@ -61,5 +61,6 @@ vec2 grassWindTilt(GrassWind w, vec2 rel_xz, float phase, int frequency_step) {
 struct GrassBlade {
     vec4 root_width;    // camera-relative root position (m), width at the root (m)
     vec4 shape;         // length (m), facing angle (rad), bend (x, z): direction and tip angle (rad)
-    uvec4 look;         // packed sqrt(tip albedo) RGBA8, packed terrain normal (snorm), candidate id, unused
+    uvec4 look;         // packed sqrt(tip albedo) RGBA8, packed terrain normal (snorm), candidate id,
+                        // the bend one frame earlier minus now (half2, rad; 0 without a previous frame)
 };

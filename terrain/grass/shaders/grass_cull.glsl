@@ -41,7 +41,7 @@ layout(location = 11) uniform vec2 u_tex_offset;   // camera x, z relative to th
 layout(location = 12) uniform vec4 u_planes[5];    // frustum side and near planes (camera-relative, inward)
 layout(location = 17) uniform vec4 u_wind_a;       // dir x, z; gust origin x, z
 layout(location = 18) uniform vec4 u_wind_b;       // inv gust scale, sway phase, strength, gust
-layout(location = 19) uniform vec4 u_wind_c;       // sway, unused x3
+layout(location = 19) uniform vec4 u_wind_c;       // sway; previous frame's gust origin x, z and sway phase (< 0: none)
 layout(location = 20) uniform vec4 u_color;        // tip colour (linear), colour variation
 layout(location = 21) uniform vec4 u_dry;          // dry colour (linear), dry fraction
 layout(location = 23) uniform ivec2 u_box_mod;     // box min cell modulo cells per side (0..cells-1)
@@ -129,13 +129,25 @@ bool cull(uint id, out GrassBlade blade, out uint list) {
     vec2 face = vec2(-sin(facing), cos(facing));
     GrassWind wind = GrassWind(u_wind_a.xy, u_wind_a.zw, u_wind_b.x, u_wind_b.y, u_wind_b.z, u_wind_b.w, u_wind_c.x);
     int step = 6 + min(int(grassRandom(h, 8u) * 5.0), 4);
-    vec2 bend = face * (u_blade.w * grassRandom(h, 6u)) + grassWindTilt(wind, rel_xz, 6.2831853 * grassRandom(h, 7u), step);
+    float phase = 6.2831853 * grassRandom(h, 7u);
+    vec2 tilt = grassWindTilt(wind, rel_xz, phase, step);
+    vec2 bend = face * (u_blade.w * grassRandom(h, 6u)) + tilt;
+    // The wind's tilt one frame earlier, as a change of the bend (grass.velocity): the same
+    // field at the previous time (gust origin and sway phase of that time, this camera).
+    vec2 bend_change = vec2(0.0);
+    if (u_wind_c.w >= 0.0) {
+        GrassWind before = wind;
+        before.gust_origin = u_wind_c.yz;
+        before.sway_phase = u_wind_c.w;
+        bend_change = grassWindTilt(before, rel_xz, phase, step) - tilt;
+    }
 
     vec3 color = mix(u_color.rgb, u_dry.rgb, u_dry.w * grassRandom(h, 9u) * grassRandom(h, 9u));
     color *= 1.0 + u_color.w * (grassRandom(h, 10u) * 2.0 - 1.0) * 0.5;
     blade.root_width = vec4(root, width);
     blade.shape = vec4(len, facing, bend);
-    blade.look = uvec4(packUnorm4x8(vec4(sqrt(clamp(color, 0.0, 1.0)), 0.0)), packSnorm4x8(vec4(n, 0.0)), id, 0u);
+    blade.look = uvec4(packUnorm4x8(vec4(sqrt(clamp(color, 0.0, 1.0)), 0.0)), packSnorm4x8(vec4(n, 0.0)), id,
+                       packHalf2x16(bend_change));
     list = d < u_radius.w ? 0u : 1u;
     return true;
 }
