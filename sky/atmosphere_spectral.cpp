@@ -327,6 +327,7 @@ SunlightConversion sunlightConversion(const AtmosphereParams& p) {
 }
 
 glm::dvec3 sunlightRgb(const SunlightConversion& c, glm::dvec3 t) {
+    if (t.x <= 0.0 && t.y <= 0.0 && t.z <= 0.0) return glm::dvec3(0.0);  // blocked (the planet): none at any wavelength
     const glm::dvec3 depth = -glm::log(glm::max(t, glm::dvec3(1e-300)));
     glm::dvec3 rgb(0.0);
     for (int i = 0; i < kSunlightWavelengths; ++i)

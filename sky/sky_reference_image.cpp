@@ -25,8 +25,10 @@ std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParam
     const double pixel_rad = glm::radians(view.fov_deg) / view.height;
     const double disk_cos = std::cos(p.sun_angular_radius + 1.5 * pixel_rad);
     // The sky pass's conversion of the in-scattered samples to linear sRGB (skyRgb() in
-    // sky/shaders/atmosphere.glsl); the sunlit ground keeps the samples under a white sun.
+    // sky/shaders/atmosphere.glsl); the sunlit ground's path (view ray, then to the sun) through
+    // sunlightRgb(), as sky.glsl lights it.
     const glm::dmat3 colour = skyColourMatrix(sun.y);
+    const SunlightConversion sunlight = sunlightConversion(p);
     const int w = view.width, h = view.height;
     std::vector<glm::vec3> out(std::size_t(w) * std::size_t(h));
     auto row = [&](int y) {
@@ -42,8 +44,8 @@ std::vector<glm::vec3> referenceSkyImage(const SkySettings& sky, const ViewParam
                 glm::dvec3 g = planetFromWorld(p, camera) + v.distance * d;
                 double mu_s = glm::dot(glm::normalize(g), sun);
                 if (mu_s > 0.0)
-                    l += v.transmittance * (p.ground_albedo / std::numbers::pi) * mu_s *
-                         transmittance(p, p.bottom_radius, mu_s, steps.transmittance);
+                    l += (p.ground_albedo / std::numbers::pi) * mu_s *
+                         sunlightRgb(sunlight, v.transmittance * transmittance(p, p.bottom_radius, mu_s, steps.transmittance));
             } else if (glm::dot(d, sun) > disk_cos) {
                 o = glm::vec3(std::numeric_limits<float>::quiet_NaN());
                 continue;
