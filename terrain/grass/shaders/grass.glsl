@@ -92,14 +92,8 @@ void main() {
 layout(location = 5) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
 in vec4 v_prev_clip;
 layout(location = 0) out vec4 o_velocity;
-void main() {
-    vec2 ndc = gl_FragCoord.xy * u_viewport.zw * 2.0 - 1.0 - u_jitter.xy;
-    o_velocity = vec4(0.0);
-    if (v_prev_clip.w > 1e-6) {
-        vec2 v = (ndc - v_prev_clip.xy / v_prev_clip.w) * 0.5;
-        if (!any(isnan(v)) && !any(isinf(v))) o_velocity = vec4(v, v_prev_clip.z / v_prev_clip.w, 1.0);
-    }
-}
+#include "../../../renderer/shaders/surface_velocity.glsl"
+void main() { o_velocity = surfaceVelocity(v_prev_clip, u_jitter.xy); }
 #endif
 
 #if defined(FRAGMENT_SHADER) && defined(SHADOW_PASS)
