@@ -787,14 +787,16 @@ void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, const C
     TextureHandle velocity;
     if ((f.taa || request.velocity || motion_blur) && scene.depth.valid())
         velocity = addVelocityPass(graph, f.rc, scene.depth, f.previous_view);
-    // The sea's waves and the grass in the wind move on their own: their motion replaces the
-    // camera's where they are seen.
+    // The sea's waves, the grass in the wind and the falling drops move on their own: their
+    // motion replaces the camera's where they are seen.
     if (velocity.valid() && f.s.water.enabled && !f.shadow_view && water_.get() && !f.cut)
         velocity = water_->addVelocityPass(graph, f.rc, scene.depth, velocity,
                                            previousClipFromRelative(f.previous_view, f.view));
     if (velocity.valid() && casters.blades.valid() && !f.shadow_view && !f.cut)
         velocity = grass_->addVelocityPass(graph, f.rc, f.s.grass, casters.blades, scene.depth, velocity,
                                            previousClipFromRelative(f.previous_view, f.view));
+    if (velocity.valid() && weather_.get() && !f.shadow_view && !f.cut)
+        velocity = weather_->addVelocityPass(graph, f.rc, scene.depth, velocity, previousClipFromRelative(f.previous_view, f.view));
     scene.velocity = velocity;
     if (request.velocity && velocity.valid())
         addReadbackPass(graph, "temporal.velocity_readback", velocity, GL_FLOAT, *request.velocity);

@@ -2,7 +2,8 @@
 // reprojected into the previous frame by the camera's motion, built in double on the CPU
 // (renderer/temporal.h). One target every temporal consumer reads instead of reprojecting on
 // its own (TAA, motion blur). The sea adds its waves' own motion (terrain/water/water.h addVelocityPass)
-// and the grass its blades' motion in the wind (terrain/grass/grass.h addVelocityPass); rain writes none.
+// and the grass its blades' motion in the wind (terrain/grass/grass.h addVelocityPass), the rain
+// and snow their drops' (sky/weather/weather.h addVelocityPass).
 //
 // RGBA32F: rg = this pixel's unjittered UV minus the UV its point had in the previous frame
 // (the previous position is uv - rg), b = that point's reversed-Z depth in the previous frame

@@ -14,16 +14,35 @@
 
 namespace vista {
 
+#include "sky/weather/shaders/weather_rain_block.glsl"
+
+namespace {
+
+std::vector<std::string> rainDefines(bool snow, bool velocity) {
+    std::vector<std::string> defines;
+    if (snow) defines.push_back("SNOW");
+    if (velocity) defines.push_back("RAIN_VELOCITY");
+    return defines;
+}
+
+}  // namespace
+
 ProgramList weatherPrograms() {
-    return {{"sky/weather/shaders/weather_rain.glsl", {}},
-            {"sky/weather/shaders/weather_rain.glsl", {"SNOW"}},
-            {"sky/weather/shaders/weather_splash.glsl", {}}};
+    ProgramList programs;
+    for (bool snow : {false, true})
+        for (bool velocity : {false, true}) programs.push_back({"sky/weather/shaders/weather_rain.glsl", rainDefines(snow, velocity)});
+    programs.push_back({"sky/weather/shaders/weather_splash.glsl", {}});
+    return programs;
 }
 
 glm::dvec3 Weather::cameraVelocity(const glm::dvec3& position, double time_s) {
     glm::dvec3 v(0.0);
     const double dt = time_s - previous_time_;
-    if (has_previous_ && dt > 0.0 && dt <= 1.0) v = (position - previous_position_) / dt;
+    frame_dt_s_ = 0.0;
+    if (has_previous_ && dt > 0.0 && dt <= 1.0) {
+        v = (position - previous_position_) / dt;
+        frame_dt_s_ = dt;
+    }
     const double speed = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
     if (!(speed <= 1000.0)) v = glm::dvec3(0.0);  // a teleport (or NaN), not a motion
     previous_position_ = position;
@@ -34,7 +53,6 @@ glm::dvec3 Weather::cameraVelocity(const glm::dvec3& position, double time_s) {
 
 namespace {
 
-#include "sky/weather/shaders/weather_rain_block.glsl"
 #include "sky/weather/shaders/weather_splash_block.glsl"
 
 // Blends premultiplied radiance over the HDR colour and keeps its alpha; depth test only.
@@ -61,6 +79,7 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
     const glm::dvec3 camera_velocity = cameraVelocity(rc.view.position, rc.time_s);
     stats_ = {};
     stats_.camera_velocity = camera_velocity;
+    rain_.reset();
     if (s.intensity <= 0.0f) return;  // nothing falls
     const bool snow = s.kind == WeatherKind::Snow;
     const double inv_pi = 1.0 / std::numbers::pi;
@@ -90,6 +109,18 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
     const float keep_below = s.intensity * float(layout.drops_per_cell);
     const GLsizei instances = GLsizei(stats_.drop_candidates);
 
+    auto block = std::make_shared<WeatherRainBlock>();
+    block->u_box_min = {frame.box_min, layout.cells};
+    block->u_layout = {layout.half, per_cell, count ? 1 : 0, 0};
+    block->u_frac = {frame.frac, float(layout.cell_m)};
+    block->u_motion = {motion, s.streak_time_s};
+    block->u_shape = {s.radius_m, s.near_fade_m, s.drop_width_m, keep_below};
+    block->u_ambient = {ambient, opacity};
+    block->u_sun = {sun, 0.0f};
+    block->u_sway = {float(kSnowSwayM), frame.sway_phase, float(2.0 * std::numbers::pi * kSnowSwayHz), 0.0f};
+    block->u_camera_motion = {glm::vec3(camera_velocity), float(frame_dt_s_)};
+    rain_ = RainDraw{block, instances, snow};
+
     struct Data {
         TextureHandle hdr, depth;
     };
@@ -98,25 +129,13 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             d.hdr = b.write(targets.hdr);
             d.depth = b.read(targets.depth);
         },
-        [this, &rc, &s, &counters, layout, frame, motion, opacity, ambient, sun, snow, count, per_cell, keep_below,
-         instances](const Data& d, PassContext& ctx) {
+        [this, &rc, &counters, block, snow, count, instances](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(d.hdr)}, ctx.texture(d.depth)), desc.width, desc.height);
-            GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", snow ? std::vector<std::string>{"SNOW"}
-                                                                                  : std::vector<std::string>{});
+            GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", rainDefines(snow, false));
             glUseProgram(program);
-            WeatherRainBlock block{};
-            block.u_box_min = {frame.box_min, layout.cells};
-            block.u_layout = {layout.half, per_cell, count ? 1 : 0, 0};
-            block.u_frac = {frame.frac, float(layout.cell_m)};
-            block.u_motion = {motion, s.streak_time_s};
-            block.u_shape = {s.radius_m, s.near_fade_m, s.drop_width_m, keep_below};
-            block.u_ambient = {ambient, opacity};
-            block.u_sun = {sun, 0.0f};
-            block.u_sway = {float(kSnowSwayM), frame.sway_phase, float(2.0 * std::numbers::pi * kSnowSwayHz), 0.0f};
-            bindPassBlock(rc, program, block);
-            glNamedBufferSubData(cell_buffer_.id(), 0, GLsizeiptr(cells_.size() * sizeof(std::uint32_t)), cells_.data());
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kWeatherCells, cell_buffer_.id());
+            bindPassBlock(rc, program, *block);
+            uploadCells();
             if (count)
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "weather.drops"));
             glBindVertexArray(rc.empty_vao);
@@ -175,6 +194,44 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             restoreState();
         });
     targets.hdr = splash.hdr;
+}
+
+void Weather::uploadCells() const {
+    glNamedBufferSubData(cell_buffer_.id(), 0, GLsizeiptr(cells_.size() * sizeof(std::uint32_t)), cells_.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kWeatherCells, cell_buffer_.id());
+}
+
+TextureHandle Weather::addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, TextureHandle velocity,
+                                       const glm::dmat4& prev_clip_from_relative) {
+    if (!rain_) return velocity;  // no drop drawn this frame
+    auto block = std::make_shared<WeatherRainBlock>(*rain_->block);
+    block->u_layout.z = 0;  // counted once, by weather.rain
+    block->u_prev_clip = glm::mat4(prev_clip_from_relative);
+    block->u_velocity_cover = {rc.jitter_ndc.x, rc.jitter_ndc.y, kRainVelocityOpacity, 0.0f};
+    const RainDraw draw = *rain_;
+    struct Data {
+        TextureHandle depth, velocity;
+    };
+    return graph.addPass<Data>("weather.velocity",
+        [&](PassBuilder& b, Data& d) {
+            d.depth = b.read(depth);
+            d.velocity = b.write(velocity);
+        },
+        [this, &rc, block, draw](const Data& d, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(d.velocity);
+            bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}, ctx.texture(d.depth)), desc.width, desc.height);
+            const GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", rainDefines(draw.snow, true));
+            glUseProgram(program);
+            bindPassBlock(rc, program, *block);
+            uploadCells();  // the graph may run this pass before weather.rain (neither reads the other)
+            glBindVertexArray(rc.empty_vao);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);  // reversed-Z: in front of the scene
+            glDepthMask(GL_FALSE);
+            glDisable(GL_CULL_FACE);
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.instances);
+            restoreState();
+        }).velocity;
 }
 
 }  // namespace vista

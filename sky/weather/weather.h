@@ -3,7 +3,8 @@
 // shader (no buffer), and "weather.splash" short-lived splashes on the terrain; both blend
 // into scene.hdr after the sky and clouds, depth-tested against scene.depth. The terrain's
 // wet darkening is a uniform of terrain.gbuffer (Terrain::setWetness). A frame with [weather]
-// off creates no Weather object and adds no pass (app/frame.cpp).
+// off creates no Weather object and adds no pass (app/frame.cpp). "weather.velocity" redraws
+// the drops into the frame's motion vectors (addVelocityPass).
 #pragma once
 
 #include "config/settings.h"
@@ -15,9 +16,12 @@
 #include "renderer/scene_targets.h"
 #include "sky/weather/weather_model.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +29,11 @@
 namespace vista {
 
 class Terrain;
+struct WeatherRainBlock;  // sky/weather/shaders/weather_rain_block.glsl
+
+// weather.velocity: a drop takes over a pixel's motion vector where its opacity reaches this
+// (fainter drops leave the background's, which TAA then follows under them).
+inline constexpr float kRainVelocityOpacity = 0.15f;
 
 ProgramList weatherPrograms();
 
@@ -44,6 +53,11 @@ public:
     void addPasses(FrameGraph& graph, const RenderContext& rc, const WeatherSettings& s, const CloudsSettings& clouds,
                    const SunAndSky& light, const Terrain* terrain, const TerrainSettings& ts, SceneTargets& targets,
                    CounterReadback& counters, bool count);
+    // Adds weather.velocity: the drops weather.rain drew this frame (none: velocity unchanged)
+    // write their own motion over `velocity` where they are opaque enough
+    // (kRainVelocityOpacity). prev_clip_from_relative: renderer/temporal.h previousClipFromRelative.
+    TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, TextureHandle velocity,
+                                  const glm::dmat4& prev_clip_from_relative);
     const WeatherStats& stats() const { return stats_; }
     std::size_t memoryBytes() const { return std::size_t(cell_buffer_.size()); }  // GPU bytes held across frames
 
@@ -51,8 +65,17 @@ private:
     // The camera's velocity (m/s) from the previous call: streaks follow the motion relative
     // to the camera. 0 on the first frame, when time did not advance or jumped by over 1 s.
     glm::dvec3 cameraVelocity(const glm::dvec3& position, double time_s);
+    void uploadCells() const;  // cells_ into cell_buffer_, bound for the rain shader
+
+    struct RainDraw {
+        std::shared_ptr<const WeatherRainBlock> block;  // weather.rain's uniforms this frame
+        GLsizei instances = 0;
+        bool snow = false;
+    };
 
     WeatherStats stats_;
+    std::optional<RainDraw> rain_;  // this frame's drops, for addVelocityPass; none when no drop is drawn
+    double frame_dt_s_ = 0.0;       // time since the previous frame (0: none, or a jump)
     std::vector<std::uint32_t> cells_;  // this frame's visible drop cells (packed offsets)
     gl::Buffer cell_buffer_;            // the same on the GPU, grown as needed
     glm::dvec3 previous_position_{0.0};

@@ -2,9 +2,11 @@
 // and off between frames works; on, weather.rain (and weather.splash) run after the sky with
 // finite HDR output at the origin, 10,000 km out and at t = 10^7 s, for rain and snow; drops
 // show against the sky and are hidden behind nearer terrain (depth test); splashes land on the
-// ground; rain darkens the terrain's albedo; rainRippleNormal on the GPU matches its CPU mirror.
+// ground; rain darkens the terrain's albedo; rainRippleNormal on the GPU matches its CPU mirror;
+// near drops write their fall into the motion vectors (weather.velocity).
 #include "app/frame.h"
 #include "renderer/half.h"
+#include "renderer/temporal.h"
 #include "renderer_fixture.h"
 #include "sky/weather/weather_model.h"
 #include "terrain/heightmap.h"
@@ -12,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include <glm/geometric.hpp>
 
 using namespace vista;
 
@@ -256,4 +260,80 @@ TEST_CASE("gl: rainRippleNormal on the GPU matches the double-precision CPU mirr
     std::printf("rain ripple probe: worst |GPU - CPU| %.2e, largest tilt %.2f\n", worst, tilted);
     CHECK(tilted > 0.1);
     CHECK(worst < 2e-3);
+}
+
+TEST_CASE("gl: rain writes its drops' fall into the motion vectors, as the CPU placement and wind say") {
+    // Two frames dt apart, the camera moving a little: where a near drop is what a pixel shows,
+    // the motion vector is that drop point's motion (its fall and the wind, and the camera's),
+    // from the CPU mirror of the placement; camera-only vectors would miss the fall. Wide drops
+    // against the sky, so many pass the opacity weather.velocity asks for.
+    test::TempDir dir("weather-velocity");
+    const auto map = flatMap(dir);
+    const double dt = 0.1;
+    for (auto [origin, t] : {std::pair{glm::dvec3(0.0), 10.0}, std::pair{glm::dvec3(1.0e7, 0.0, -1.0e7), 1.0e7}}) {
+        CAPTURE(origin.x);
+        Settings s = weatherScene(map, origin);
+        s.weather.splashes = false;
+        s.weather.drop_width_m = 0.03f;
+        s.weather.near_fade_m = 0.5f;
+        const ViewParams before = view(origin + glm::dvec3(0.0, kGround + 1.7, 0.0), 20.0, 35.0);
+        ViewParams now = before;
+        now.position += glm::dvec3(0.05, 0.0, 0.02);
+        now.yaw_deg += 0.3;
+        FrameRenderer& r = renderer();
+        REQUIRE(r.prepare(s).empty());
+        r.resetHistory();
+        r.render(s, before, t - dt, FrameRequest{});
+        std::vector<float> velocity;
+        FrameRequest request;
+        request.velocity = &velocity;
+        const FrameReport report = r.render(s, now, t, request);
+        CHECK(has(report.executed, "weather.velocity"));
+        const int w = now.width, h = now.height;
+        REQUIRE(velocity.size() == std::size_t(w * h * 4));
+
+        const DropLayout layout = dropLayout(s.weather);
+        const DropFrame frame = dropFrame(layout, now.position, dropFieldOffset(s.weather, s.clouds, t), t);
+        const int per_cell = dropsDrawnPerCell(layout, s.weather.intensity);
+        const double keep_below = double(s.weather.intensity) * layout.drops_per_cell;
+        const glm::dvec2 wind = weatherWindVelocity(s.weather, s.clouds, t);
+        const glm::dvec3 fall(wind.x, -double(s.weather.drop_speed_m_s), wind.y);
+        const glm::dmat4 vp(viewMatrices(now).view_proj);
+        const glm::dmat4 prev_clip = previousClipFromRelative(before, now);
+        auto ndcOf = [](const glm::dvec4& c) { return glm::dvec2(c) / c.w; };
+        std::vector<double> errors, camera_only;
+        double motion = 0.0;
+        for (int z = 0; z < layout.cells; ++z)
+            for (int y = 0; y < layout.cells; ++y)
+                for (int x = 0; x < layout.cells; ++x)
+                    for (int j = 0; j < per_cell; ++j) {
+                        const Drop drop = dropAt(layout, frame, {x, y, z}, j);
+                        const double d = glm::length(drop.rel);
+                        if (double(j) + drop.keep >= keep_below || d < 1.5 || d > 6.0) continue;  // not drawn, or faint
+                        const glm::dvec4 clip = vp * glm::dvec4(drop.rel, 1.0);
+                        if (!(clip.w > 0.0)) continue;
+                        const glm::dvec2 ndc = ndcOf(clip);
+                        const int px = int(std::floor((ndc.x * 0.5 + 0.5) * w)), row = int(std::floor((0.5 - ndc.y * 0.5) * h));
+                        if (px < 0 || px >= w || row < 0 || row >= h) continue;
+                        const std::size_t i = std::size_t(row * w + px);
+                        const glm::dvec2 expect = (ndc - ndcOf(prev_clip * glm::dvec4(drop.rel - fall * dt, 1.0))) * 0.5;
+                        const glm::dvec2 camera = (ndc - ndcOf(prev_clip * glm::dvec4(drop.rel, 1.0))) * 0.5;
+                        const glm::dvec2 got(velocity[i * 4], velocity[i * 4 + 1]);
+                        const glm::dvec2 size(w, h);
+                        errors.push_back(glm::length((got - expect) * size));
+                        camera_only.push_back(glm::length((camera - expect) * size));
+                        motion += glm::length((expect - camera) * size);
+                    }
+        REQUIRE(errors.size() > 20);
+        motion /= double(errors.size());
+        std::sort(errors.begin(), errors.end());
+        std::sort(camera_only.begin(), camera_only.end());
+        const double median = errors[errors.size() / 2], camera_median = camera_only[camera_only.size() / 2];
+        MESSAGE("drops " << errors.size() << ": fall motion " << motion << " px; error median " << median
+                         << " px, p75 " << errors[errors.size() * 3 / 4] << " px; camera-only vectors off by "
+                         << camera_median << " px (median)");
+        CHECK(motion > 1.0);                   // the drops fall well beyond the camera's motion
+        CHECK(median < 0.05 * motion);         // each head pixel follows its drop
+        CHECK(camera_median > 0.5 * motion);   // the camera's vectors alone would not
+    }
 }

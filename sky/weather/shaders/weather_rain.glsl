@@ -7,6 +7,11 @@
 // where it is, at least 1.5 px wide (thinner drops fade instead); SNOW: a round flake swaying
 // sideways. Lit by the sun and sky irradiance at the camera (dark at night), premultiplied
 // alpha over scene.hdr, depth-tested against scene.depth (reversed-Z).
+// RAIN_VELOCITY ("weather.velocity"): the same quads again over the frame's motion vectors
+// (renderer/velocity.h), after the camera's: where a drop is opaque enough to be what TAA
+// should follow (u_velocity_cover.z), the pixel takes the drop's motion: its camera-relative
+// point moved back by the drop's world velocity over the frame interval, projected by the
+// previous camera (u_prev_clip); elsewhere the background's vector stays.
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/counters.glsl"
 #include "weather_common.glsl"
@@ -20,6 +25,9 @@ layout(std430, binding = BINDING_WEATHER_CELLS) readonly buffer Cells { uint u_c
 out vec2 v_local;         // along the streak from its tail end (m), across (m)
 flat out vec4 v_streak;   // length between the cap centres (m), half width (m), alpha, unused
 flat out vec3 v_radiance;
+#ifdef RAIN_VELOCITY
+out vec4 v_prev_clip;
+#endif
 
 void main() {
     const int cells = u_box_min.w, per_cell = u_layout.y;
@@ -46,6 +54,9 @@ void main() {
         v_local = vec2(0.0);
         v_streak = vec4(0.0);
         v_radiance = vec3(0.0);
+#ifdef RAIN_VELOCITY
+        v_prev_clip = vec4(0.0);
+#endif
         return;
     }
     if (u_layout.z != 0 && gl_VertexID == 0 && (u_view * vec4(p, 0.0)).z < 0.0)
@@ -78,6 +89,10 @@ void main() {
     v_radiance = u_ambient.rgb + u_sun.rgb * (0.05 + 2.0 * pow(max(mu, 0.0), 12.0));
 #endif
     gl_Position = u_view_proj * vec4(corner, 1.0);
+#ifdef RAIN_VELOCITY
+    // The drop's world velocity: its motion relative to the camera plus the camera's.
+    v_prev_clip = u_prev_clip * vec4(corner - (v + u_camera_motion.xyz) * u_camera_motion.w, 1.0);
+#endif
 }
 #endif
 
@@ -85,6 +100,10 @@ void main() {
 in vec2 v_local;
 flat in vec4 v_streak;
 flat in vec3 v_radiance;
+#ifdef RAIN_VELOCITY
+in vec4 v_prev_clip;
+#include "../../../renderer/shaders/surface_velocity.glsl"
+#endif
 layout(location = 0) out vec4 o_color;
 
 void main() {
@@ -98,6 +117,11 @@ void main() {
     shape *= 0.35 + 0.65 * (v_streak.x > 0.0 ? q / v_streak.x : 1.0);  // brighter toward the head
 #endif
     float a = clamp(shape * v_streak.z, 0.0, 1.0);
+#ifdef RAIN_VELOCITY
+    if (a < u_velocity_cover.z) discard;
+    o_color = surfaceVelocity(v_prev_clip, u_velocity_cover.xy);
+#else
     o_color = vec4(v_radiance * a, a);
+#endif
 }
 #endif

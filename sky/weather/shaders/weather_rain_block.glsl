@@ -9,4 +9,8 @@ PASS_BLOCK(WeatherRainBlock)
     vec4 u_ambient;   // sky light a drop sends back (radiance rgb), opacity
     vec4 u_sun;       // sun light a drop sends back (radiance rgb), unused
     vec4 u_sway;      // snow: amplitude (m), phase (rad), angular rate (rad/s), unused
+    // RAIN_VELOCITY only (weather.velocity):
+    mat4 u_prev_clip;       // previous clip from this camera's relative space
+    vec4 u_camera_motion;   // the camera's velocity (m/s), the time since the previous frame (s)
+    vec4 u_velocity_cover;  // this frame's jitter (NDC) xy, the drop opacity above which a pixel takes its motion, unused
 PASS_BLOCK_END
