@@ -57,6 +57,19 @@ void bindPassBlock(const RenderContext& rc, GLuint program, const Block& block) 
     rc.device.bindUniforms(binding::kPassBlock, &block, sizeof(Block));
 }
 
+// The same outside a frame (work done once at load, with no ring to stream through): `block`
+// goes into a buffer of its own, bound at binding::kPassBlock; keep the buffer until the draws
+// or dispatches that read it have been issued.
+template <class Block>
+[[nodiscard]] gl::Buffer bindPassBlockOnce(ShaderLibrary& shaders, GLuint program, const Block& block) {
+    static_assert(sizeof(Block) % 16 == 0, "a pass block's members come in whole 16-byte rows");
+    static_assert(std::is_trivially_copyable_v<Block>);
+    shaders.checkBlock(program, Block::kBlockName, sizeof(Block));
+    gl::Buffer buffer = gl::Buffer::create(GLsizeiptr(sizeof(Block)), &block, 0, Block::kBlockName);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPassBlock, buffer.id());
+    return buffer;
+}
+
 // One full-screen pass writing a new target sized after its first input (or `size_from`).
 struct FullscreenPass {
     FullscreenPass(std::string name_, ProgramKey program_, std::vector<TextureHandle> inputs_, std::string target_)

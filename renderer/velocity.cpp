@@ -2,12 +2,15 @@
 #include "renderer/velocity.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "renderer/temporal.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
 namespace vista {
+namespace {
+#include "renderer/shaders/velocity_block.glsl"
+}  // namespace
 
 glm::dmat4 clipReprojection(const ViewParams& previous, const ViewParams& current) {
     // inverse(view_proj) takes clip to camera-relative points; previousClipFromRelative adds the
@@ -23,8 +26,8 @@ glm::dvec4 cpuVelocity(const ViewParams& previous, const ViewParams& current, gl
 }
 
 TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, TextureHandle depth, const ViewParams& previous) {
-    const glm::mat4 reproject(clipReprojection(previous, rc.view));
-    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    const VelocityBlock block{glm::mat4(clipReprojection(previous, rc.view)),
+                              glm::vec4(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f)};
     struct Data {
         TextureHandle depth, velocity;
     };
@@ -34,13 +37,12 @@ TextureHandle addVelocityPass(FrameGraph& graph, const RenderContext& rc, Textur
             d.depth = b.read(depth);
             d.velocity = b.write(b.create("temporal.velocity", {desc.width, desc.height, PixelFormat::RGBA32F}));
         },
-        [&rc, reproject, jitter](const Data& d, PassContext& ctx) {
+        [&rc, block](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}), desc.width, desc.height);
             const GLuint program = rc.shaders.id("renderer/shaders/velocity.glsl");
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(reproject));
-            glProgramUniform4fv(program, 1, 1, glm::value_ptr(jitter));
+            bindPassBlock(rc, program, block);
             glBindTextureUnit(binding::kTex0, ctx.texture(d.depth));
             drawFullscreen(rc);
         }).velocity;

@@ -2,6 +2,7 @@
 #include "terrain/terrain.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/dem.h"
 #include "terrain/tile_cache.h"
 #include "terrain/materials.h"
@@ -15,7 +16,13 @@
 #include <cstring>
 
 namespace vista {
+
+#include "terrain/shaders/terrain_block.glsl"
+static_assert(TERRAIN_BLOCK_LAYERS == kMaxMaterialLayers && kMaxMaterialLayers % 4 == 0,
+              "terrain_block.glsl holds every material layer and packs their scales four a row");
+
 namespace {
+#include "terrain/shaders/normals_block.glsl"
 
 // A selection larger than this is truncated (and says so): far beyond any sane LOD setting.
 constexpr std::size_t kMaxInstances = 1 << 16;
@@ -79,7 +86,6 @@ std::vector<std::string> terrainDefines(const TerrainSettings& s, int tier) {
     // distance_m, which draw() keeps within detail_distance_m (where the near tier ends).
     if (s.pom.enabled && s.view == TerrainView::Shaded && tier == 0) defines.push_back("TERRAIN_POM");
     if (s.wireframe) defines.push_back("TERRAIN_WIREFRAME");
-    defines.push_back("MATERIAL_LAYERS=" + std::to_string(kMaxMaterialLayers));
     // Splat maps place the layers instead of the height/slope rules (user_materials.h).
     for (std::string& d : splatDefines(s)) defines.push_back(std::move(d));
     // Heights and normals through the page table of the streamed pool (terrain/tile_stream.h).
@@ -253,9 +259,10 @@ std::unique_ptr<Terrain> Terrain::create(Heightmap heightmap, const TerrainMappi
         return nullptr;
     }
     glUseProgram(normals->id());
-    glProgramUniform2f(normals->id(), 0, float(t->mapping_.texelSizeX()), float(t->mapping_.texelSizeZ()));
-    glProgramUniform1f(normals->id(), 1, float(t->mapping_.height_scale_m));
-    t->bindTiles(normals->id(), 2);
+    const Terrain::TileRows rows = t->tileRows();
+    const NormalsBlock block{{float(t->mapping_.texelSizeX()), float(t->mapping_.texelSizeZ())},
+                             float(t->mapping_.height_scale_m), 0.0f, rows.tiles, rows.layer};
+    const gl::Buffer block_buffer = bindPassBlockOnce(shaders, normals->id(), block);
     glBindTextureUnit(binding::kTex0, t->height_.id());
     glBindImageTexture(binding::kImageOutput, t->normals_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8_SNORM);
     glDispatchCompute(GLuint((tiles.layer.x + 15) / 16), GLuint((tiles.layer.y + 15) / 16), GLuint(layers));
@@ -608,10 +615,15 @@ std::size_t Terrain::shadowInstances(const TerrainSettings& s, const Frustum& pl
     return tess;
 }
 
-void Terrain::bindSplat(GLuint program, GLint location) const {
-    if (splat_images_ == 0) return;
-    glBindTextureUnit(binding::kTex5, splat_.id());
-    glProgramUniform4iv(program, location, GLsizei(splat_layers_.size() / 4), splat_layers_.data());
+void Terrain::bindSplat() const {
+    if (splat_images_ > 0) glBindTextureUnit(binding::kTex5, splat_.id());
+}
+
+std::array<glm::ivec4, kMaxSplatImages> Terrain::splatLayers() const {
+    std::array<glm::ivec4, kMaxSplatImages> layers{};
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        layers[i] = {splat_layers_[4 * i], splat_layers_[4 * i + 1], splat_layers_[4 * i + 2], splat_layers_[4 * i + 3]};
+    return layers;
 }
 
 Terrain::TileRows Terrain::tileRows() const {
@@ -619,28 +631,24 @@ Terrain::TileRows Terrain::tileRows() const {
             {float(tiles_.layer.x), float(tiles_.layer.y), float(mapping_.width), float(mapping_.height)}};
 }
 
-void Terrain::bindTiles(GLuint program, GLint location) const {
-    const TileRows rows = tileRows();
-    glProgramUniform4iv(program, location, 1, &rows.tiles.x);
-    glProgramUniform4fv(program, location + 1, 1, &rows.layer.x);
-}
-
-void Terrain::setVertexState(const TerrainSettings& s, GLuint program) {
+void Terrain::setVertexState(const TerrainSettings& s, TerrainBlock& block) {
     if (bias_dirty_) {
         glm::ivec2 corners = bias_.cornerCount();
         glTextureSubImage2D(bias_texture_.id(), 0, 0, 0, corners.x, corners.y, GL_RED, GL_FLOAT, bias_.corners().data());
         bias_dirty_ = false;
     }
     glm::dvec3 rel = camera_ - s.origin;  // camera relative to the map centre
-    glProgramUniform1i(program, 0, s.grid / 2);
-    glProgramUniform2f(program, 1, float(-mapping_.sizeX() * 0.5 - rel.x), float(-mapping_.sizeZ() * 0.5 - rel.z));
-    glProgramUniform2f(program, 2, float(mapping_.texelSizeX()), float(mapping_.texelSizeZ()));
-    glProgramUniform2f(program, 3, float(mapping_.height_scale_m), float(mapping_.height_offset_m - rel.y));
-    glProgramUniform2f(program, 9, float(mapping_.sizeX() * 0.5 - rel.x), float(mapping_.sizeZ() * 0.5 - rel.z));
-    bindTiles(program, 10);
-    glProgramUniform4i(program, 12, bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
-                       s.lod_metric == LodMetric::Error ? 1 : 0);
-    glProgramUniform1i(program, 25, 0);  // first instance: the whole bound range
+    block.u_quads = s.grid / 2;
+    block.u_map_min = {float(-mapping_.sizeX() * 0.5 - rel.x), float(-mapping_.sizeZ() * 0.5 - rel.z)};
+    block.u_texel_m = {float(mapping_.texelSizeX()), float(mapping_.texelSizeZ())};
+    block.u_height_map = {float(mapping_.height_scale_m), float(mapping_.height_offset_m - rel.y)};
+    block.u_map_max = {float(mapping_.sizeX() * 0.5 - rel.x), float(mapping_.sizeZ() * 0.5 - rel.z)};
+    const TileRows rows = tileRows();
+    block.u_tiles = rows.tiles;
+    block.u_tile_layer = rows.layer;
+    block.u_bias_cells = {bias_.cornerCount().x - 1, bias_.cornerCount().y - 1, bias_.leafTexels(),
+                          s.lod_metric == LodMetric::Error ? 1 : 0};
+    block.u_first_instance = 0;
     glBindTextureUnit(binding::kTex4, bias_texture_.id());
     if (stream_) {
         glBindTextureUnit(binding::kTex0, stream_->heightPages());
@@ -658,19 +666,20 @@ TessRelief Terrain::tessRelief(const TerrainSettings& s) const {
                              double(rock_repeat > 0.0f ? rock_repeat : s.texture_scale_m));
 }
 
-void Terrain::setTessState(const TerrainSettings& s, GLuint program) {
+void Terrain::setTessState(const TerrainSettings& s, TerrainBlock& block) {
     const TerrainTessSettings& t = s.tessellation;
     const TessRelief r = tessRelief(s);
     glm::dvec3 rel = camera_ - s.origin;
-    glProgramUniform4f(program, 28, t.edge_px, float(error_scale_), t.range_m, t.max_factor);
-    glProgramUniform4f(program, 29, float(r.depth_m), float(1.0 / r.period_m), float(std::fmod(rel.x, r.period_m)),
-                       float(std::fmod(rel.z, r.period_m)));
-    glProgramUniform4f(program, 30, float(r.fade_start_m), float(r.fade_end_m), float(r.layer), 0.0f);
+    block.u_tess = {t.edge_px, float(error_scale_), t.range_m, t.max_factor};
+    block.u_tess_relief = {float(r.depth_m), float(1.0 / r.period_m), float(std::fmod(rel.x, r.period_m)),
+                           float(std::fmod(rel.z, r.period_m))};
+    block.u_tess_fade = {float(r.fade_start_m), float(r.fade_end_m), float(r.layer), 0.0f};
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glBindTextureUnit(binding::kTex3, detail_.id());
 }
 
-void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program) {
+void Terrain::draw(const RenderContext& rc, const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs,
+                   GLuint tess_program) {
     if (instances_.empty()) return;
     glNamedBufferSubData(instance_buffer_.id(), 0, GLsizeiptr(instances_.size() * sizeof(TerrainInstance)), instances_.data());
     glm::dvec3 rel = camera_ - s.origin;
@@ -688,10 +697,28 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, instance_buffer_.id());
     // Texture coordinates per metre of each layer: a user material's tiling_m, else texture_scale_m
     // (the generated rock at half that scale: its strata want the larger repeat).
-    std::array<float, kMaxMaterialLayers> layer_scale{};
-    for (std::size_t l = 0; l < layer_scale.size(); ++l)
-        layer_scale[l] = layer_repeat_m_[l] > 0.0f ? 1.0f / layer_repeat_m_[l]
-                                                   : (l == std::size_t(MaterialLayer::Rock) ? 0.5f : 1.0f) / s.texture_scale_m;
+    TerrainBlock block{};
+    for (std::size_t l = 0; l < std::size_t(kMaxMaterialLayers); ++l) {
+        block.u_layer_scale[l / 4][int(l % 4)] =
+            layer_repeat_m_[l] > 0.0f ? 1.0f / layer_repeat_m_[l]
+                                      : (l == std::size_t(MaterialLayer::Rock) ? 0.5f : 1.0f) / s.texture_scale_m;
+        block.u_layer_mean[l] = layer_mean_[l];
+    }
+    block.u_bands = {s.sand_top, s.grass_top, s.snow_start, s.band_blend};
+    block.u_material = {s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m};
+    block.u_tex_offset = {float(rel.x), float(rel.z)};
+    block.u_far_fade = {far_start, far_end};
+    block.u_max_error_px = s.max_error_px;
+    block.u_grass_far = far_grass_;
+    block.u_grass_fade = far_grass_fade_;
+    block.u_wetness = wetness_;
+    const std::array<glm::ivec4, kMaxSplatImages> splat = splatLayers();
+    std::copy(splat.begin(), splat.end(), block.u_splat_layers);
+    // The relief is gone where the near tier ends (the other tiers have no POM variant).
+    const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
+    block.u_pom = {s.pom.depth_m, pom_end, s.pom.shadow, 0.0f};
+    block.u_pom_steps = {s.pom.max_steps, s.pom.refine_steps, s.pom.shadow_steps, 0};
+    if (!s.splat_map.empty()) bindSplat();
     std::size_t first = 0;
     for (int tier = 0; tier < kMaterialTiers; ++tier) {
         const std::size_t count = tier_counts_[std::size_t(tier)];
@@ -703,48 +730,32 @@ void Terrain::draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTi
             const std::size_t n = pass == 0 ? tess : count - tess;
             if (n == 0) continue;
             glUseProgram(program);
-            setVertexState(s, program);
-            glProgramUniform1i(program, 25, GLint(first));
-            glProgramUniform4f(program, 4, s.sand_top, s.grass_top, s.snow_start, s.band_blend);
-            glProgramUniform4f(program, 5, s.band_jitter, s.rock_slope, 1.0f / s.texture_scale_m, s.detail_distance_m);
-            glProgramUniform2f(program, 6, float(rel.x), float(rel.z));
-            glProgramUniform2f(program, 7, far_start, far_end);
-            glProgramUniform1f(program, 13, s.max_error_px);
-            glProgramUniform4f(program, 14, far_grass_.r, far_grass_.g, far_grass_.b, far_grass_.a);
-            glProgramUniform2f(program, 15, far_grass_fade_.x, far_grass_fade_.y);
-            glProgramUniform1f(program, 17, wetness_);
-            glProgramUniform4fv(program, 32, GLsizei(layer_mean_.size()), &layer_mean_[0].x);
-            glProgramUniform1fv(program, 40, GLsizei(layer_scale.size()), layer_scale.data());
-            // Only TERRAIN_SPLAT programs declare it (a location no uniform holds is a GL error).
-            if (!s.splat_map.empty()) bindSplat(program, 48);
-            if (tier == 0 && s.pom.enabled && pass == 1) {
-                // The relief is gone where the near tier ends (the other tiers have no POM variant).
-                const float pom_end = std::min(s.pom.distance_m, s.detail_distance_m);
-                glProgramUniform4f(program, 26, s.pom.depth_m, pom_end, s.pom.shadow, 0.0f);
-                glProgramUniform4i(program, 27, s.pom.max_steps, s.pom.refine_steps, s.pom.shadow_steps, 0);
-            }
-            if (pass == 0) setTessState(s, program);
+            setVertexState(s, block);
+            block.u_first_instance = GLint(first);
+            if (pass == 0) setTessState(s, block);
+            bindPassBlock(rc, program, block);
             glDrawElementsInstanced(pass == 0 ? GL_PATCHES : GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(n));
             first += n;
         }
     }
 }
 
-void Terrain::drawShadowPatches(const TerrainSettings& s, GLuint program, std::size_t first, std::size_t count) {
+void Terrain::drawShadowPatches(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
+                                std::size_t first, std::size_t count) {
     const GLuint tess_program = shaders_->get("terrain/shaders/terrain_tess.glsl", {"SHADOW_PASS"})->id();
-    GLfloat matrix[16];
-    glGetUniformfv(program, 16, matrix);  // the caller's cascade, tile or face matrix
     glUseProgram(tess_program);
-    glProgramUniformMatrix4fv(tess_program, 16, 1, GL_FALSE, matrix);
-    setVertexState(s, tess_program);
-    setTessState(s, tess_program);
-    glProgramUniform1i(tess_program, 25, GLint(first));
+    TerrainBlock block{};
+    block.u_shadow_matrix = matrix;
+    setVertexState(s, block);
+    setTessState(s, block);
+    block.u_first_instance = GLint(first);
+    bindPassBlock(rc, tess_program, block);
     glDrawElementsInstanced(GL_PATCHES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
     glUseProgram(program);
 }
 
-void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances,
-                         std::size_t tess, int slot) {
+void Terrain::drawShadow(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
+                         const std::vector<TerrainInstance>& instances, std::size_t tess, int slot) {
     if (instances.empty()) return;
     if (!shadow_instances_) {  // only scenes with sun shadows pay for it
         GLint align = 256;
@@ -759,15 +770,19 @@ void Terrain::drawShadow(const TerrainSettings& s, GLuint program, const std::ve
     glNamedBufferSubData(shadow_instances_.id(), offset, bytes, instances.data());
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_instances_.id(), offset, bytes);
     tess = std::min(tess, instances.size());
-    if (tess > 0) drawShadowPatches(s, program, 0, tess);
+    if (tess > 0) drawShadowPatches(rc, s, program, matrix, 0, tess);
     if (tess == instances.size()) return;
-    setVertexState(s, program);
-    glProgramUniform1i(program, 25, GLint(tess));
+    TerrainBlock block{};
+    block.u_shadow_matrix = matrix;
+    setVertexState(s, block);
+    block.u_first_instance = GLint(tess);
+    bindPassBlock(rc, program, block);
     glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size() - tess));
 }
 
-void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
-                              std::span<const std::size_t> tess, const std::function<void(std::size_t)>& before) {
+void Terrain::drawShadowLists(const RenderContext& rc, const TerrainSettings& s, GLuint program,
+                              std::span<const std::vector<TerrainInstance>> lists, std::span<const std::size_t> tess,
+                              const std::function<glm::mat4(std::size_t)>& before) {
     GLint align = 256;
     glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
     std::vector<GLintptr> offsets(lists.size());
@@ -786,14 +801,17 @@ void Terrain::drawShadowLists(const TerrainSettings& s, GLuint program, std::spa
                                  lists[i].data());
     for (std::size_t i = 0; i < lists.size(); ++i) {
         if (lists[i].empty()) continue;
-        before(i);
+        const glm::mat4 matrix = before(i);
         glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding::kTerrainNodes, shadow_lists_.id(), offsets[i],
                           GLsizeiptr(lists[i].size() * sizeof(TerrainInstance)));
         const std::size_t patches = i < tess.size() ? std::min(tess[i], lists[i].size()) : 0;
-        if (patches > 0) drawShadowPatches(s, program, 0, patches);
+        if (patches > 0) drawShadowPatches(rc, s, program, matrix, 0, patches);
         if (patches == lists[i].size()) continue;
-        setVertexState(s, program);
-        glProgramUniform1i(program, 25, GLint(patches));
+        TerrainBlock block{};
+        block.u_shadow_matrix = matrix;
+        setVertexState(s, block);
+        block.u_first_instance = GLint(patches);
+        bindPassBlock(rc, program, block);
         glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(lists[i].size() - patches));
     }
 }
@@ -869,7 +887,7 @@ void addTerrainPass(FrameGraph& graph, const RenderContext& rc, Terrain& terrain
             const GLuint tess = s.tessellation.enabled
                                     ? rc.shaders.id("terrain/shaders/terrain_tess.glsl", terrainTessDefines(s))
                                     : 0;
-            terrain.draw(s, programs, tess);
+            terrain.draw(rc, s, programs, tess);
             glDisable(GL_CULL_FACE);
             glDisable(GL_DEPTH_TEST);
         });

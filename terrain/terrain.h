@@ -26,6 +26,9 @@ namespace vista {
 // normals, triplanar rock), mid (albedo only), far (each layer's mean albedo).
 inline constexpr int kMaterialTiers = 3;
 
+// The terrain programs' uniform block (terrain/shaders/terrain_block.glsl, filled in terrain.cpp).
+struct TerrainBlock;
+
 struct TerrainCounters {
     std::int64_t triangles = 0, nodes = 0, draws = 0;
     std::array<std::int64_t, kMaterialTiers> tier_instances{};  // drawn quadrants per material tier
@@ -116,7 +119,8 @@ public:
     // programs[tier] (terrainDefines()); uploads a remade bias first. With [terrain.tessellation]
     // on, the near tier's quadrants within its range are drawn first as patches with tess_program
     // (terrainTessDefines()).
-    void draw(const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs, GLuint tess_program = 0);
+    void draw(const RenderContext& rc, const TerrainSettings& s, std::span<const GLuint, kMaterialTiers> programs,
+              GLuint tess_program = 0);
 
     // The instances of the current selection inside planes (camera-relative), for a shadow pass;
     // with `keep`, only the nodes whose camera-relative box (lo, hi) it accepts (`skipped`, when
@@ -130,18 +134,19 @@ public:
                                 bool tessellate,
                                 const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep = {},
                                 std::size_t* skipped = nullptr);
-    // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS; its matrix at
-    // location 16 set) into slot 0..kShadowSlots-1 of the shadow instance buffer (made on first
-    // use); the first `tess` of them (shadowInstances()) as patches with terrain_tess.glsl's shadow
-    // program.
+    // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS) through matrix
+    // (camera-relative world -> the shadow view's clip) into slot 0..kShadowSlots-1 of the shadow
+    // instance buffer (made on first use); the first `tess` of them (shadowInstances()) as patches
+    // with terrain_tess.glsl's shadow program.
     static constexpr int kShadowSlots = 8;
-    void drawShadow(const TerrainSettings& s, GLuint program, const std::vector<TerrainInstance>& instances,
-                    std::size_t tess, int slot);
+    void drawShadow(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
+                    const std::vector<TerrainInstance>& instances, std::size_t tess, int slot);
     // Draws several instance lists depth-only (spot shadow tiles, point cube faces): all are
-    // uploaded at once, then list i is drawn after before(i) has set its viewport and program's
-    // matrix; its first tess[i] instances as patches. Empty lists are skipped.
-    void drawShadowLists(const TerrainSettings& s, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
-                         std::span<const std::size_t> tess, const std::function<void(std::size_t)>& before);
+    // uploaded at once, then list i is drawn through the matrix before(i) returns (after it has set
+    // its viewport); its first tess[i] instances as patches. Empty lists are skipped.
+    void drawShadowLists(const RenderContext& rc, const TerrainSettings& s, GLuint program,
+                         std::span<const std::vector<TerrainInstance>> lists, std::span<const std::size_t> tess,
+                         const std::function<glm::mat4(std::size_t)>& before);
     // The displacement's relief, depth and fade for s (terrain/tess_displacement.h: the shader's
     // uniforms and the CPU mirror).
     TessRelief tessRelief(const TerrainSettings& s) const;
@@ -166,11 +171,10 @@ public:
         glm::vec4 layer;
     };
     TileRows tileRows() const;
-    // Sets the tile rows as uniforms at location, location + 1.
-    void bindTiles(GLuint program, GLint location) const;
-    // With a splat map: binds its weights to BINDING_TEX_5 and sets the layer of each channel
-    // (ivec4[2], material.glsl splatWeightsAt) at location, location + 1 (programs with splatDefines()).
-    void bindSplat(GLuint program, GLint location) const;
+    // With a splat map: binds its weights to BINDING_TEX_5 (programs with splatDefines()).
+    void bindSplat() const;
+    // The layer each splat channel weighs (material.glsl splatWeightsAt; -1: none).
+    std::array<glm::ivec4, kMaxSplatImages> splatLayers() const;
 
 private:
     Terrain() = default;
@@ -185,13 +189,15 @@ private:
                          std::vector<float>* distances = nullptr) const;
     // Orders instances_ by material tier, then front to back, and counts each tier's.
     void sortInstances(const TerrainSettings& s, const std::vector<float>& distances);
-    // Sets the vertex stage's terrain uniforms and textures (the shadow pass needs only these).
-    void setVertexState(const TerrainSettings& s, GLuint program);
-    // Sets terrain_tess.glsl's uniforms (factors for the main camera, relief) and patch size.
-    void setTessState(const TerrainSettings& s, GLuint program);
+    // Sets the vertex stage's terrain uniforms in block (the first instance 0: the whole bound
+    // range) and binds its textures (the shadow pass needs only these).
+    void setVertexState(const TerrainSettings& s, TerrainBlock& block);
+    // Sets terrain_tess.glsl's uniforms in block (factors for the main camera, relief) and the patch size.
+    void setTessState(const TerrainSettings& s, TerrainBlock& block);
     // Draws instances [first, first + count) of the bound shadow instance range as patches with
-    // the tessellated shadow program, with the matrix the caller set on program (location 16).
-    void drawShadowPatches(const TerrainSettings& s, GLuint program, std::size_t first, std::size_t count);
+    // the tessellated shadow program through matrix, then makes program current again.
+    void drawShadowPatches(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
+                           std::size_t first, std::size_t count);
 
     TerrainSettings source_;  // what was loaded (file, mapping)
     Heightmap map_;

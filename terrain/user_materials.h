@@ -18,7 +18,7 @@
 namespace vista {
 
 // Layers of the material arrays at most: the five generated ones and three added by the user
-// (terrain.glsl gets it as MATERIAL_LAYERS).
+// (terrain/shaders/terrain_block.glsl holds as many: TERRAIN_BLOCK_LAYERS).
 inline constexpr int kMaxMaterialLayers = 8;
 // Splat images at most (4 channels each; terrain.glsl gets the count as TERRAIN_SPLAT).
 inline constexpr int kMaxSplatImages = 2;

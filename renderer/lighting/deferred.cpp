@@ -2,6 +2,7 @@
 #include "renderer/lighting/deferred.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/common.hpp>
@@ -10,6 +11,9 @@
 #include <cmath>
 
 namespace vista {
+namespace {
+#include "renderer/lighting/shaders/sun_block.glsl"
+}  // namespace
 
 SunAndSky sunAndSky(const SkyLighting& sky, const SkySettings& settings) {
     SunAndSky out;
@@ -49,15 +53,16 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             if (debug == DebugView::Shadow) variant.debug = SunVariant::Debug::ShadowTerm;
             if (debug == DebugView::Cascades && variant.sun_shadow) variant.debug = SunVariant::Debug::Cascades;
             if (data.shadow.valid()) shadows.bind(ctx.texture(data.shadow));
-            glUseProgram(rc.shaders.id(variant.key()));
+            const GLuint program = rc.shaders.id(variant.key());
+            glUseProgram(program);
             if (data.ao.valid()) glBindTextureUnit(binding::kTex3, ctx.texture(data.ao));
-            if (data.cloud_shadow.valid()) {
-                glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));
-                glUniform4fv(8, 1, &light.cloud_shadow_map.x);
-            }
-            glUniform3fv(0, 1, &light.sun_irradiance.x);
-            glUniform3fv(1, 1, &light.sky_up.x);
-            glUniform3fv(2, 1, &light.ground_up.x);
+            if (data.cloud_shadow.valid()) glBindTextureUnit(SKY_TEX_CLOUD_SHADOW, ctx.texture(data.cloud_shadow));
+            SunBlock block{};
+            block.u_sun_irradiance = light.sun_irradiance;
+            block.u_sky_up = light.sky_up;
+            block.u_ground_up = light.ground_up;
+            block.u_cloud_shadow_map = light.cloud_shadow_map;
+            bindPassBlock(rc, program, block);
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.albedo));
             glBindTextureUnit(binding::kTex2, ctx.texture(data.normal));

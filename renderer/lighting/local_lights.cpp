@@ -4,6 +4,7 @@
 #include "renderer/lighting/light_settings.h"
 #include "renderer/lighting/light_variants.h"
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -16,6 +17,8 @@
 namespace vista {
 
 namespace {
+
+#include "renderer/lighting/shaders/light_shade_block.glsl"
 
 struct GpuLight {
     glm::vec4 position_radius, color_scale, direction_offset, shadow;
@@ -512,7 +515,8 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
                                           : rc.device.framebuffer({ctx.texture(data.hdr)});
             bindTarget(fb, desc.width, desc.height);
             const LightShadeVariant variant{method, options.count, data.heat.valid(), data.spot.valid(), data.point.valid()};
-            glUseProgram(rc.shaders.id(variant.key()));
+            const GLuint program = rc.shaders.id(variant.key());
+            glUseProgram(program);
             bindBuffers();
             if (data.spot.valid()) options.spot_shadows->bind(ctx.texture(data.spot));
             if (data.point.valid()) options.point_shadows->bind(ctx.texture(data.point));
@@ -528,7 +532,7 @@ void LocalLights::addPasses(FrameGraph& graph, const RenderContext& rc, SceneTar
             if (data.heat.valid()) glDisablei(GL_BLEND, 1);
             // One draw per chunk of the ranges (lights.glsl chunkOf), added up.
             for (std::uint32_t k = 0; k < stats_.chunks; ++k) {
-                glUniform2ui(0, k * kLightChunk, kLightChunk);
+                bindPassBlock(rc, program, LightShadeBlock{{k * kLightChunk, kLightChunk}, {0u, 0u}});
                 if (culled) {  // drawn only when lights.cull found a tile with a light
                     glBindVertexArray(rc.empty_vao);
                     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, shade_draw_.id());

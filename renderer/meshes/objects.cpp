@@ -3,6 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/gl_device.h"
+#include "renderer/pass_kit.h"
 #include "renderer/meshes/gltf_loader.h"
 #include "renderer/meshes/impostor.h"
 #include "renderer/meshes/mesh_lod.h"
@@ -17,7 +18,13 @@
 #include <map>
 
 namespace vista {
+
+#include "renderer/meshes/shaders/object_block.glsl"
+
 namespace {
+
+#include "renderer/meshes/shaders/impostor_block.glsl"
+#include "renderer/meshes/shaders/object_cull_block.glsl"
 
 struct GpuInstance {
     glm::vec4 position_yaw;
@@ -321,17 +328,17 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
             GLuint program = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl");
             glUseProgram(program);
-            glProgramUniform1ui(program, 0, GLuint(instance_count_));
-            glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
-            glProgramUniform4f(program, 2, s.lod1_distance_m, s.lod2_distance_m, s.max_distance_m,
-                               s.cast_shadows ? s.shadow_distance_m : -1.0f);
-            glProgramUniform1ui(program, 3, count ? 1u : 0u);
+            ObjectCullBlock block{};
+            block.u_count = GLuint(instance_count_);
+            block.u_camera = camera;
+            block.u_distances = {s.lod1_distance_m, s.lod2_distance_m, s.max_distance_m,
+                                 s.cast_shadows ? s.shadow_distance_m : -1.0f};
+            block.u_count_enabled = count ? 1u : 0u;
             // Impostors only nearer than max_distance_m (else none: the fade band is empty too).
             const float impostor = s.impostor_distance_m < s.max_distance_m ? s.impostor_distance_m : 2.0f * s.max_distance_m + 1.0f;
-            glProgramUniform2f(program, 9, impostor, s.impostor_fade_m);
-            for (int p = 0; p < 5; ++p)
-                glProgramUniform4f(program, 4 + p, float(planes[std::size_t(p)].x), float(planes[std::size_t(p)].y),
-                                   float(planes[std::size_t(p)].z), float(planes[std::size_t(p)].w));
+            block.u_impostor = {impostor, s.impostor_fade_m};
+            for (std::size_t p = 0; p < 5; ++p) block.u_planes[p] = glm::vec4(planes[p]);
+            bindPassBlock(rc, program, block);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectModels, models_buffer_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
@@ -349,7 +356,9 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
             GLuint fixup = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl", {"FIXUP_DRAWS"});
             glUseProgram(fixup);
-            glProgramUniform1ui(fixup, 0, GLuint(draws_list_.size()));
+            ObjectCullBlock fixup_block{};
+            fixup_block.u_draw_count = GLuint(draws_list_.size());
+            bindPassBlock(rc, fixup, fixup_block);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectDraws, draws_.id());
             glDispatchCompute(GLuint((draws_list_.size() + 63) / 64), 1, 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -357,12 +366,11 @@ BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, co
     return d.lists;
 }
 
-void Objects::setMaterial(GLuint program, int model_index, int material, float emissive_nits, bool shadow) const {
+void Objects::setMaterial(ObjectBlock& block, int model_index, int material, float emissive_nits, bool shadow) const {
     const ModelMaterial& mat = models_[std::size_t(model_index)].materials[std::size_t(material)];
-    glProgramUniform4f(program, 2, mat.base_color.r, mat.base_color.g, mat.base_color.b, mat.base_color.a);
-    glProgramUniform4f(program, 3, mat.metallic, mat.roughness, mat.normal_scale, mat.occlusion_strength);
-    const glm::vec3 e = mat.emissive * emissive_nits;
-    glProgramUniform4f(program, 4, e.r, e.g, e.b, mat.alpha_mode == AlphaMode::Blend ? 0.5f : mat.alpha_cutoff);
+    block.u_base_color = mat.base_color;
+    block.u_material = {mat.metallic, mat.roughness, mat.normal_scale, mat.occlusion_strength};
+    block.u_emissive = {mat.emissive * emissive_nits, mat.alpha_mode == AlphaMode::Blend ? 0.5f : mat.alpha_cutoff};
     auto tex = [&](int image, bool srgb, GLuint fallback) {
         if (image < 0) return fallback;
         const int t = (srgb ? image_textures_ : image_linear_)[std::size_t(model_index)][std::size_t(image)];
@@ -415,15 +423,17 @@ void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool sh
         if (mask) defines.push_back("ALPHA_MASK");
         const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
         glUseProgram(program);
-        glProgramUniform1ui(program, 0, d.region);
-        glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
+        ObjectBlock block{};
+        block.u_matrix = matrix;
+        block.u_camera = camera;
+        block.u_region = d.region;
         if (fading) {
             const glm::vec4& sphere = spheres_[std::size_t(d.model)];
-            glProgramUniform4f(program, 5, band_start, 1.0f / (band_end - band_start), sphere.x, sphere.y);
-            glProgramUniform1f(program, 6, sphere.z);
+            block.u_fade = {band_start, 1.0f / (band_end - band_start), sphere.x, sphere.y};
+            block.u_fade_centre_z = sphere.z;
         }
-        glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
-        setMaterial(program, d.model, d.material, emissive_nits_, shadow);
+        setMaterial(block, d.model, d.material, emissive_nits_, shadow);
+        bindPassBlock(rc, program, block);
         glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(d.offset));
     }
     glDisable(GL_CULL_FACE);
@@ -442,17 +452,19 @@ void Objects::drawImpostors(const RenderContext& rc, const ObjectsSettings& s) c
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, visible_.id());
     for (int u = 0; u < 3; ++u) glBindSampler(GLuint(binding::kTex0 + u), sampler_.id());
     const float band_start = std::max(0.0f, s.impostor_distance_m - s.impostor_fade_m);
-    glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
-    glProgramUniform4f(program, 5, band_start, 1.0f / std::max(s.impostor_distance_m - band_start, 1e-3f), float(kImpostorFrames),
-                       emissive_nits_);
-    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
+    ImpostorBlock block{};
+    block.u_matrix = rc.matrices.view_proj;
+    block.u_camera = camera;
+    block.u_params = {band_start, 1.0f / std::max(s.impostor_distance_m - band_start, 1e-3f), float(kImpostorFrames),
+                      emissive_nits_};
     glDisable(GL_CULL_FACE);
     for (const Draw& d : draws_list_) {
         if (!d.impostor) continue;
         const Impostor& atlas = impostors_[std::size_t(d.model)];
         const glm::vec4& sphere = spheres_[std::size_t(d.model)];
-        glProgramUniform1ui(program, 0, d.region);
-        glProgramUniform4f(program, 2, sphere.x, sphere.y, sphere.z, sphere.w);
+        block.u_region = d.region;
+        block.u_sphere = sphere;
+        bindPassBlock(rc, program, block);
         glBindTextureUnit(binding::kTex0, atlas.emissive.id());
         glBindTextureUnit(binding::kTex1, atlas.albedo.id());
         glBindTextureUnit(binding::kTex2, atlas.normal.id());
@@ -519,10 +531,10 @@ void Objects::bakeImpostors(const RenderContext& rc) {
                     if (mat.alpha_mode != AlphaMode::Opaque) defines.push_back("ALPHA_MASK");
                     const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
                     glUseProgram(program);
-                    glProgramUniform1ui(program, 0, 0u);
-                    glProgramUniform3f(program, 1, 0.0f, 0.0f, 0.0f);
-                    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
-                    setMaterial(program, int(m), p.material, 1.0f, false);  // emissive factor; x nits when drawn
+                    ObjectBlock block{};  // region 0, camera at the origin
+                    block.u_matrix = matrix;
+                    setMaterial(block, int(m), p.material, 1.0f, false);  // emissive factor; x nits when drawn
+                    bindPassBlock(rc, program, block);
                     glDrawElementsInstancedBaseVertex(
                         GL_TRIANGLES, GLsizei(p.index_count), GL_UNSIGNED_INT,
                         reinterpret_cast<const void*>(std::size_t(index_base_[m] + p.first_index) * 4), 1, GLint(vertex_base_[m]));
@@ -548,7 +560,9 @@ void Objects::drawShadow(const RenderContext& rc, const glm::mat4& matrix) const
     if (shadow_counter_ == 0) return;
     const GLuint program = rc.shaders.id("renderer/meshes/shaders/object_cull.glsl", {"COUNT_SHADOW"});
     glUseProgram(program);
-    glProgramUniform1ui(program, 0, GLuint(models_.size()));
+    ObjectCullBlock block{};
+    block.u_model_count = GLuint(models_.size());
+    bindPassBlock(rc, program, block);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectModels, models_buffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectCounts, counts_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, shadow_counter_);
@@ -608,10 +622,12 @@ void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, 
                 if (mat.alpha_mode == AlphaMode::Mask) defines.push_back("ALPHA_MASK");
                 const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
                 glUseProgram(program);
-                glProgramUniform1ui(program, 0, start);
-                glProgramUniform3f(program, 1, camera.x, camera.y, camera.z);
-                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrices[i][0][0]);
-                setMaterial(program, int(m), p.material, emissive_nits_, true);
+                ObjectBlock block{};
+                block.u_matrix = matrices[i];
+                block.u_camera = camera;
+                block.u_region = start;
+                setMaterial(block, int(m), p.material, emissive_nits_, true);
+                bindPassBlock(rc, program, block);
                 glDrawElementsInstancedBaseVertex(
                     GL_TRIANGLES, GLsizei(p.index_count), GL_UNSIGNED_INT,
                     reinterpret_cast<const void*>(std::size_t(index_base_[m] + p.first_index) * 4), GLsizei(count),

@@ -34,6 +34,8 @@
 
 namespace vista {
 
+struct ObjectBlock;  // object.glsl's uniforms (shaders/object_block.glsl)
+
 // A shadow map a forward pass samples: the pass reads `map`, bind(map texture) binds it with its
 // samplers and uniforms, unbind() puts the samplers back (invalid map: unshadowed).
 struct ForwardShadow {
@@ -164,7 +166,8 @@ private:
     void upload(float emissive_nits);
     void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectsSettings* fade) const;
     void drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const;
-    void setMaterial(GLuint program, int model, int material, float emissive_nits, bool shadow) const;
+    // Sets a material's factors in block, binds its textures and sets its face culling.
+    void setMaterial(ObjectBlock& block, int model, int material, float emissive_nits, bool shadow) const;
 
     ObjectsSettings placed_for_;
     bool has_placement_ = false;

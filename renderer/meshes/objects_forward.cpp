@@ -20,12 +20,15 @@
 
 #include "renderer/bindings.h"
 #include "renderer/gl_device.h"
+#include "renderer/pass_kit.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace vista {
+
+#include "renderer/meshes/shaders/object_block.glsl"
 
 std::vector<std::string> forwardDefines(const std::string& lights_define, bool spot_shadows, bool point_shadows, bool fog) {
     std::vector<std::string> defines{"FORWARD"};
@@ -191,18 +194,17 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
             const GLuint program = rc.shaders.id("renderer/meshes/shaders/object.glsl", defines);
             glUseProgram(program);
             if (light.bind_lights) light.bind_lights();
-            const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
-            for (GLuint p : {program, chunk_program}) {
-                if (p == 0) continue;
-                glProgramUniform3f(p, 1, camera.x, camera.y, camera.z);
-                glProgramUniformMatrix4fv(p, 16, 1, GL_FALSE, &rc.matrices.view_proj[0][0]);
-                glProgramUniform4f(p, 11, side.clip.x, side.clip.y, side.clip.z, side.clip.w);
-                if (data.inscatter.valid()) glProgramUniform4f(p, 12, layout.x, layout.y, layout.z, layout.w);
-            }
-            glProgramUniform3f(program, 7, light.sun_irradiance.r, light.sun_irradiance.g, light.sun_irradiance.b);
-            glProgramUniform3f(program, 8, light.sky_up.r, light.sky_up.g, light.sky_up.b);
-            glProgramUniform3f(program, 9, light.ground_up.r, light.ground_up.g, light.ground_up.b);
-            if (lit) glProgramUniform2ui(program, 10, 0, light.light_chunk);
+            // The further chunks' programs shade the local lights only: no sun and sky.
+            ObjectBlock chunk_block{};
+            chunk_block.u_camera = glm::vec3(rc.view.position - anchor_);
+            chunk_block.u_matrix = rc.matrices.view_proj;
+            chunk_block.u_clip = side.clip;
+            if (data.inscatter.valid()) chunk_block.u_aerial = layout;
+            ObjectBlock block = chunk_block;
+            block.u_sun_irradiance = light.sun_irradiance;
+            block.u_sky_up = light.sky_up;
+            block.u_ground_up = light.ground_up;
+            if (lit) block.u_light_chunk = {0u, light.light_chunk};
             glBindVertexArray(vao_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectInstances, instances_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kObjectVisible, forward_list_.id());
@@ -215,17 +217,19 @@ void Objects::addTransparentPass(FrameGraph& graph, const RenderContext& rc, con
                         reinterpret_cast<const void*>(std::size_t(index_base_[std::size_t(bl.model)] + bl.primitive.first_index) * 4),
                         1, GLint(vertex_base_[std::size_t(bl.model)]));
                 };
-                glProgramUniform1ui(program, 0, GLuint(item.slot));  // the instance is forward_list_[slot]
-                setMaterial(program, bl.model, bl.primitive.material, emissive_nits_, false);
+                block.u_region = GLuint(item.slot);  // the instance is forward_list_[slot]
+                setMaterial(block, bl.model, bl.primitive.material, emissive_nits_, false);
+                bindPassBlock(rc, program, block);
                 draw();
                 if (chunks == 1) continue;
                 glUseProgram(chunk_program);
-                glProgramUniform1ui(chunk_program, 0, GLuint(item.slot));
-                setMaterial(chunk_program, bl.model, bl.primitive.material, emissive_nits_, false);
+                chunk_block.u_region = GLuint(item.slot);
+                setMaterial(chunk_block, bl.model, bl.primitive.material, emissive_nits_, false);
                 glDepthFunc(GL_EQUAL);
                 glDepthMask(GL_FALSE);
                 for (std::uint32_t k = 1; k < chunks; ++k) {
-                    glProgramUniform2ui(chunk_program, 10, k * light.light_chunk, light.light_chunk);
+                    chunk_block.u_light_chunk = {k * light.light_chunk, light.light_chunk};
+                    bindPassBlock(rc, chunk_program, chunk_block);
                     draw();
                 }
                 glDepthFunc(GL_GREATER);

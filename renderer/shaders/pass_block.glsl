@@ -19,8 +19,10 @@
         using vec4 = glm::vec4;                          \
         using ivec2 = glm::ivec2;                        \
         using ivec4 = glm::ivec4;                        \
+        using uvec2 = glm::uvec2;                        \
         using uvec4 = glm::uvec4;                        \
         using mat4 = glm::mat4;                          \
+        using uint = std::uint32_t;                      \
         static constexpr const char* kBlockName = #NAME;
 #define PASS_BLOCK_END };
 #else

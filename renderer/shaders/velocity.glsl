@@ -7,8 +7,7 @@
 #ifdef FRAGMENT_SHADER
 #include "bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
-layout(location = 0) uniform mat4 u_reproject;
-layout(location = 1) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
+#include "velocity_block.glsl"
 layout(location = 0) out vec4 o_velocity;
 
 void main() {

@@ -184,10 +184,9 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
             GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
             glUseProgram(program);
-            terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t i) {
+            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);
-                const glm::mat4 m(views_[i / kCubeFaces].view_proj[i % kCubeFaces]);
-                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
+                return glm::mat4(views_[i / kCubeFaces].view_proj[i % kCubeFaces]);
             });
             if (extra.valid())
                 for (std::size_t k = 0; k < slots_.size(); ++k) {

@@ -209,10 +209,9 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
                 glViewport(x, y, tile, tile);
                 glScissor(x, y, tile, tile);
             };
-            terrain->drawShadowLists(ts, program, instances_, tess_, [&](std::size_t k) {
+            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t k) {
                 bindTile(k);
-                const glm::mat4 m(views_[k].view_proj);
-                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
+                return glm::mat4(views_[k].view_proj);
             });
             if (extra.valid())
                 for (std::size_t k = 0; k < slots_.size(); ++k) {

@@ -244,14 +244,13 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glPolygonOffset(settings_.slope_bias, 0.0f);
                 GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
                 glUseProgram(program);
-                glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
-                glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &m[0][0]);
+                const glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 // Seen from the sun, the terrain's back faces lie behind its front faces (a
                 // heightfield): culling them leaves the same depths for less rasterising.
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
                 glFrontFace(GL_CCW);
-                terrain->drawShadow(ts, program, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
+                terrain->drawShadow(rc, ts, program, m, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
                 glDisable(GL_CULL_FACE);
                 if (extra.valid()) extra.draw(m);
                 glDisable(GL_POLYGON_OFFSET_FILL);

@@ -3,13 +3,13 @@
 #include "sky/clouds/clouds.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "renderer/temporal.h"
 #include "sky/atmosphere.h"
 #include "sky/clouds/cloud_model.h"
 #include "sky/shaders/sky_bindings.glsl"
 
 #include <glm/common.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/vec2.hpp>
 
 #include <algorithm>
@@ -17,6 +17,9 @@
 #include <numbers>
 
 namespace vista {
+namespace {
+#include "sky/clouds/shaders/clouds_temporal_block.glsl"
+}  // namespace
 
 // std140 mirror of CloudUniforms in sky/clouds/shaders/clouds_common.glsl.
 struct Clouds::Gpu {
@@ -225,9 +228,10 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
     }
     const bool history = history_valid_ && !cut;
     history_frames_ = history ? std::min(history_frames_ + 1, int(std::lround(1.0 / temporal_blend_))) : 1;
-    const glm::mat4 prev_clip(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0));
-    const glm::vec4 shift(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), 0.0f);
-    const glm::vec4 params(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y);
+    const CloudsTemporalBlock block{
+        glm::mat4(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0)),
+        glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), 0.0f),
+        glm::vec4(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y)};
     history_view_ = rc.view;
     history_valid_ = true;
     const int read = history_current_, write = 1 - history_current_;
@@ -251,14 +255,12 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
             d.out = b.write(h_out);
             d.out_distance = b.write(hd_out);
         },
-        [&rc, prev_clip, shift, params](const Data& d, PassContext& ctx) {
+        [&rc, block](const Data& d, PassContext& ctx) {
             const TextureDesc& out = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.out_distance)}), out.width, out.height);
             const GLuint program = rc.shaders.id("sky/clouds/shaders/clouds_temporal.glsl");
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(prev_clip));
-            glProgramUniform4fv(program, 1, 1, glm::value_ptr(shift));
-            glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+            bindPassBlock(rc, program, block);
             const GLuint history = ctx.texture(d.history);
             glTextureParameteri(history, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTextureParameteri(history, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

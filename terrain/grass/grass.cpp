@@ -3,16 +3,21 @@
 #include "terrain/grass/grass.h"
 
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "terrain/cdlod.h"
 #include "terrain/terrain.h"
 
-#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace vista {
+
+#include "terrain/grass/shaders/grass_block.glsl"
+
 namespace {
+
+#include "terrain/grass/shaders/grass_cull_block.glsl"
 
 constexpr std::uint32_t kMaxListBlades = 1u << 22;  // per list: 192 MiB of blades at most
 
@@ -119,35 +124,36 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
 
             GLuint program = rc.shaders.id("terrain/grass/shaders/grass_cull.glsl", splatDefines(ts));
             glUseProgram(program);
-            glProgramUniform4i(program, 0, box_min.x, box_min.y, l.cells, l.blades_per_cell);
-            glProgramUniform2i(program, 1, int(camera_cell.x), int(camera_cell.y));
-            const glm::ivec2 box_mod = grassWrapCell(box_min, glm::ivec2(0), l.cells);  // box_min mod cells, >= 0
-            glProgramUniform2i(program, 23, box_mod.x, box_mod.y);
-            glProgramUniform4f(program, 2, float(frac.x), float(frac.y), float(l.cell_m), float(l.candidates()));
-            glProgramUniform4f(program, 3, s.radius_m, std::min(s.thin_start, 0.999f) * s.radius_m, s.far_keep,
-                               s.lod_distance_m);
-            glProgramUniform4f(program, 4, s.blade_height_m, s.height_variation, s.blade_width_m, s.curvature);
-            glProgramUniform4f(program, 5, float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z),
-                               float(m.texelSizeX()), float(m.texelSizeZ()));
-            glProgramUniform2f(program, 6, float(m.height_scale_m), float(m.height_offset_m - rel.y));
-            terrain.bindTiles(program, 7);
-            glProgramUniform4f(program, 9, ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend);
-            glProgramUniform4f(program, 10, ts.band_jitter, ts.rock_slope, 0.031f / ts.texture_scale_m, 0.0f);
-            glProgramUniform2f(program, 11, float(rel.x), float(rel.z));
-            for (int p = 0; p < 5; ++p)
-                glProgramUniform4f(program, 12 + p, float(planes[std::size_t(p)].x), float(planes[std::size_t(p)].y),
-                                   float(planes[std::size_t(p)].z), float(planes[std::size_t(p)].w));
-            glProgramUniform4f(program, 17, w.dir.x, w.dir.y, w.gust_origin.x, w.gust_origin.y);
-            glProgramUniform4f(program, 18, w.inv_gust_scale, w.sway_phase, w.strength, w.gust);
-            glProgramUniform4f(program, 19, w.sway, before.gust_origin.x, before.gust_origin.y,
-                               motion_dt_s > 0.0 ? before.sway_phase : -1.0f);
-            glProgramUniform4f(program, 20, s.color.r, s.color.g, s.color.b, s.color_variation);
-            glProgramUniform4f(program, 21, s.dry_color.r, s.dry_color.g, s.dry_color.b, s.dry_fraction);
-            glProgramUniform4ui(program, 22, near_capacity_, far_capacity_, near_capacity_, count ? 1u : 0u);
+            GrassCullBlock block{};
+            block.u_box = {box_min.x, box_min.y, l.cells, l.blades_per_cell};
+            block.u_camera_cell = {int(camera_cell.x), int(camera_cell.y)};
+            block.u_box_mod = grassWrapCell(box_min, glm::ivec2(0), l.cells);  // box_min mod cells, >= 0
+            block.u_cell = {float(frac.x), float(frac.y), float(l.cell_m), float(l.candidates())};
+            block.u_radius = {s.radius_m, std::min(s.thin_start, 0.999f) * s.radius_m, s.far_keep, s.lod_distance_m};
+            block.u_blade = {s.blade_height_m, s.height_variation, s.blade_width_m, s.curvature};
+            block.u_map = {float(-m.sizeX() * 0.5 - rel.x), float(-m.sizeZ() * 0.5 - rel.z), float(m.texelSizeX()),
+                           float(m.texelSizeZ())};
+            block.u_height_map = {float(m.height_scale_m), float(m.height_offset_m - rel.y)};
+            block.u_tex_offset = {float(rel.x), float(rel.z)};
+            const Terrain::TileRows tiles = terrain.tileRows();
+            block.u_tiles = tiles.tiles;
+            block.u_tile_layer = tiles.layer;
+            block.u_bands = {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend};
+            block.u_material = {ts.band_jitter, ts.rock_slope, 0.031f / ts.texture_scale_m, 0.0f};
+            for (std::size_t p = 0; p < 5; ++p) block.u_planes[p] = glm::vec4(planes[p]);
+            block.u_wind_a = {w.dir.x, w.dir.y, w.gust_origin.x, w.gust_origin.y};
+            block.u_wind_b = {w.inv_gust_scale, w.sway_phase, w.strength, w.gust};
+            block.u_wind_c = {w.sway, before.gust_origin.x, before.gust_origin.y, motion_dt_s > 0.0 ? before.sway_phase : -1.0f};
+            block.u_color = {s.color, s.color_variation};
+            block.u_dry = {s.dry_color, s.dry_fraction};
+            block.u_capacity = {near_capacity_, far_capacity_, near_capacity_, count ? 1u : 0u};
+            const std::array<glm::ivec4, kMaxSplatImages> splat = terrain.splatLayers();
+            std::copy(splat.begin(), splat.end(), block.u_splat_layers);
+            bindPassBlock(rc, program, block);
             glBindTextureUnit(binding::kTex0, terrain.heightTexture());
             glBindTextureUnit(binding::kTex1, terrain.normalTexture());
             glBindTextureUnit(binding::kTex2, terrain.albedoTexture());
-            if (!ts.splat_map.empty()) terrain.bindSplat(program, 24);  // blades follow its grass channel
+            if (!ts.splat_map.empty()) terrain.bindSplat();  // blades follow its grass channel
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassDraws, draws_.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
             if (count)
@@ -160,15 +166,16 @@ BufferHandle Grass::addCullPass(FrameGraph& graph, const RenderContext& rc, Terr
     return cull.blades;
 }
 
-void Grass::drawLists(GLuint program, const GrassSettings& s) const {
+void Grass::drawLists(const RenderContext& rc, GLuint program, const GrassSettings& s, GrassBlock block) const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kGrassBlades, blades_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
     glDisable(GL_CULL_FACE);  // blades are two-sided
     const int segments[2] = {s.segments, farSegments(s.segments)};
     const std::uint32_t first[2] = {0, near_capacity_};
     for (int list = 0; list < 2; ++list) {
-        glProgramUniform1i(program, 0, segments[list]);
-        glProgramUniform1ui(program, 1, first[list]);
+        block.u_segments = segments[list];
+        block.u_first = first[list];
+        bindPassBlock(rc, program, block);
         glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(std::uintptr_t(list) * sizeof(DrawCommand)));
     }
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
@@ -177,9 +184,10 @@ void Grass::drawLists(GLuint program, const GrassSettings& s) const {
 void Grass::drawShadow(const RenderContext& rc, const GrassSettings& s, const glm::mat4& matrix) const {
     GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl", {"SHADOW_PASS"});
     glUseProgram(program);
-    glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, &matrix[0][0]);
     glBindVertexArray(rc.empty_vao);
-    drawLists(program, s);
+    GrassBlock block{};
+    block.u_shadow_matrix = matrix;
+    drawLists(rc, program, s, block);
 }
 
 TextureHandle Grass::addVelocityPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
@@ -188,27 +196,26 @@ TextureHandle Grass::addVelocityPass(FrameGraph& graph, const RenderContext& rc,
         BufferHandle blades;
         TextureHandle depth, velocity;
     };
-    const glm::mat4 prev_clip(prev_clip_from_relative);
-    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    GrassBlock block{};
+    block.u_prev_clip = glm::mat4(prev_clip_from_relative);
+    block.u_jitter = glm::vec4(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
     return graph.addPass<Data>("grass.velocity",
         [&](PassBuilder& b, Data& d) {
             d.blades = b.read(blades);
             d.depth = b.read(depth);
             d.velocity = b.write(velocity);
         },
-        [this, &rc, &s, prev_clip, jitter](const Data& d, PassContext& ctx) {
+        [this, &rc, &s, block](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}, ctx.texture(d.depth)), desc.width, desc.height);
             const GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl", {"GRASS_VELOCITY"});
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 16, 1, GL_FALSE, glm::value_ptr(prev_clip));
-            glProgramUniform4fv(program, 5, 1, glm::value_ptr(jitter));
             // Only where a blade is what the pixel shows (gl_Position is invariant).
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_EQUAL);
             glDepthMask(GL_FALSE);
             glBindVertexArray(rc.empty_vao);
-            drawLists(program, s);
+            drawLists(rc, program, s, block);
             glDepthMask(GL_TRUE);
             glDepthFunc(GL_GREATER);
             glDisable(GL_DEPTH_TEST);
@@ -237,12 +244,13 @@ void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const Gra
             bindTarget(fb, desc.width, desc.height);
             GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl");
             glUseProgram(program);
-            glProgramUniform4f(program, 2, s.root_darkening, s.roughness, s.normal_blend, wetness_);
+            GrassBlock block{};
+            block.u_look = {s.root_darkening, s.roughness, s.normal_blend, wetness_};
             glBindVertexArray(rc.empty_vao);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
-            drawLists(program, s);
+            drawLists(rc, program, s, block);
             glDisable(GL_DEPTH_TEST);
         });
     targets = d.t;

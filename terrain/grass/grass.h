@@ -22,6 +22,8 @@ namespace vista {
 
 class Terrain;
 
+struct GrassBlock;  // grass.glsl's uniforms (shaders/grass_block.glsl)
+
 class Grass {
 public:
     // "grass.cull": this frame's blades (before the shadow passes that draw them); returns the
@@ -58,7 +60,7 @@ public:
 
 private:
     void allocate(const GrassSettings& s);
-    void drawLists(GLuint program, const GrassSettings& s) const;  // both indirect draws with program
+    void drawLists(const RenderContext& rc, GLuint program, const GrassSettings& s, GrassBlock block) const;  // both indirect draws with program
 
     GrassLayout layout_;
     GrassSettings sized_for_{};      // the settings the buffers were made for

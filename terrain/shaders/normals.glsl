@@ -6,10 +6,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = BINDING_TEX_0) uniform sampler2DArray u_height;  // R32F heightmap tiles
 layout(binding = BINDING_IMAGE_OUTPUT, rgba8_snorm) uniform writeonly image2DArray u_normals;
-layout(location = 0) uniform vec2 u_texel_m;     // metres between samples in x and z
-layout(location = 1) uniform float u_scale_m;    // metres per heightmap unit
-layout(location = 2) uniform ivec4 u_tiles;      // tiles in x, z; texels between tiles
-layout(location = 3) uniform vec4 u_tile_layer;  // texels per layer x, z; heightmap size x, z
+#include "normals_block.glsl"
 
 // Height (m) of map texel p (integer), clamped to the map.
 float h(ivec2 p) {

@@ -7,6 +7,7 @@
 #include "../../renderer/shaders/gbuffer.glsl"
 #include "tiles.glsl"
 #include "material.glsl"
+#include "terrain_block.glsl"
 
 struct Instance {
     vec4 a;  // camera-relative x, z of the quadrant's min corner (m), grid step in x (m), LOD level
@@ -15,17 +16,6 @@ struct Instance {
 layout(std430, binding = BINDING_TERRAIN_NODES) readonly buffer Instances { Instance u_instances[]; };
 layout(binding = BINDING_TEX_0) uniform sampler2DArray u_height;   // heightmap samples (R32F tiles)
 layout(binding = BINDING_TEX_1) uniform sampler2DArray u_normals;  // world normals (RGBA8 snorm tiles)
-layout(location = 10) uniform ivec4 u_tiles;      // tiles in x, z; texels between tiles
-layout(location = 11) uniform vec4 u_tile_layer;  // texels per layer x, z; heightmap size x, z
-
-layout(location = 0) uniform int u_quads;          // quads per instance side (half a node)
-layout(location = 1) uniform vec2 u_map_min;       // camera-relative x, z of texel (0, 0) (m)
-layout(location = 2) uniform vec2 u_texel_m;       // metres between samples in x, z
-layout(location = 3) uniform vec2 u_height_map;    // height = offset + scale * sample: (scale, offset - camera y)
-layout(location = 9) uniform vec2 u_map_max;       // camera-relative x, z of the last texel (m)
-layout(location = 12) uniform ivec4 u_bias_cells;  // leaf cells in x, z; texels per cell; bias on (1) / off (0)
-layout(location = 13) uniform float u_max_error_px;  // the LOD's screen error bound (error view)
-layout(location = 25) uniform int u_first_instance;  // this draw's first entry in u_instances (one draw per tier)
 
 #ifdef TERRAIN_STREAM
 // Streamed (terrain/tile_stream.h): the finest resident level's surface (bilinear) stands in for
@@ -51,12 +41,9 @@ float surfaceSample(vec2 t) {
 #define v_lod tc_lod
 #define v_morph tc_morph
 #endif
-#ifdef SHADOW_PASS
-// A sun shadow cascade (renderer/shadows/cascades.h): camera-relative world -> clip x, y and depth. The
-// vertices morph for the main camera (distances from the camera-relative origin), so the
-// caster is the very surface the view shows.
-layout(location = 16) uniform mat4 u_shadow_matrix;
-#endif
+// SHADOW_PASS (u_shadow_matrix: a sun shadow cascade, renderer/shadows/cascades.h, a spot tile or a
+// cube face): camera-relative world -> clip x, y and depth. The vertices morph for the main camera
+// (distances from the camera-relative origin), so the caster is the very surface the view shows.
 out vec3 v_rel;        // camera-relative position (m)
 out vec2 v_texel;      // heightmap texel coordinates (the fragment stage derives it from v_rel but for TERRAIN_TESS)
 out float v_sample;    // heightmap value (for material bands; likewise)
@@ -144,23 +131,12 @@ void main() {}  // depth only
 layout(binding = BINDING_TEX_2) uniform sampler2DArray u_albedo;  // sRGB albedo, A = roughness
 layout(binding = BINDING_TEX_3) uniform sampler2DArray u_detail;  // tangent-space normals
 
-layout(location = 4) uniform vec4 u_bands;     // sand_top, grass_top, snow_start, band_blend
-layout(location = 5) uniform vec4 u_material;  // band_jitter, rock_slope, 1 / texture_scale_m, detail_distance_m
-layout(location = 6) uniform vec2 u_tex_offset;  // camera x, z modulo the texture period (m)
-layout(location = 7) uniform vec2 u_far_fade;    // m: where textures start to give way to layer means, and are gone
-layout(location = 14) uniform vec4 u_grass_far;   // grass blades' mean albedo (linear), strength (0: no grass)
-layout(location = 15) uniform vec2 u_grass_fade;  // distance (m) where the far grass colour starts, and is full
-layout(location = 17) uniform float u_wetness;    // rain ([weather]): 0 dry .. 1 soaked
-#ifndef MATERIAL_LAYERS
-#error MATERIAL_LAYERS comes from terrain.cpp terrainDefines() (kMaxMaterialLayers)
-#endif
-layout(location = 32) uniform vec4 u_layer_mean[MATERIAL_LAYERS];    // each layer's mean linear albedo, roughness (far tier)
-layout(location = 40) uniform float u_layer_scale[MATERIAL_LAYERS];  // texture coordinates per m of each layer
+// Texture coordinates per m of layer l (terrain_block.glsl packs them four a row).
+float layerScale(int l) { return u_layer_scale[l >> 2][l & 3]; }
 #ifdef TERRAIN_SPLAT
 // Splat maps (terrain/user_materials.h): TERRAIN_SPLAT RGBA images of layer weights, one texel per
 // height sample; u_splat_layers says which layer each channel weighs (-1: none).
 layout(binding = BINDING_TEX_5) uniform sampler2DArray u_splat;
-layout(location = 48) uniform ivec4 u_splat_layers[2];
 #endif
 
 in vec3 v_rel;
@@ -312,8 +288,6 @@ vec3 layerDetail(int layer, vec2 uv) {
 }
 
 #ifdef TERRAIN_POM
-layout(location = 26) uniform vec4 u_pom;         // depth_m, distance where the relief is gone (m), shadow strength, unused
-layout(location = 27) uniform ivec4 u_pom_steps;  // max linear steps, refinement steps, shadow steps, unused
 
 // What the relief at a point depends on, set once per pixel before the march: the planar
 // position's gradients (m), the two band layers, their blend t, dirt and rock weights (splat
@@ -326,7 +300,7 @@ vec3 g_normal;
 
 // Layer's relief at world position m (metres), its texture coordinates and gradients at its scale.
 float layerRelief(int layer, vec2 m) {
-    float k = u_layer_scale[layer];
+    float k = layerScale(layer);
     return textureGrad(u_detail, vec3(m * k, float(layer)), g_uv_dx * k, g_uv_dy * k).a;  // the detail array's alpha (materials.h)
 }
 
@@ -437,7 +411,7 @@ void main() {
     for (int c = 0; c < 4 * TERRAIN_SPLAT; ++c) {
         float w = c < 4 ? splat_a[c] : splat_b[c - 4];
         int layer = splatLayer(c);
-        vec2 uv = main_m * u_layer_scale[layer];
+        vec2 uv = main_m * layerScale(layer);
         albedo += w * layerAlbedo(layer, uv, textured);
 #if MATERIAL_TIER == 0
         detail += w * layerDetail(layer, uv);
@@ -445,7 +419,7 @@ void main() {
     }
     float far_grass = grass * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
 #else
-    vec2 uv_lower = world_xz * u_layer_scale[order[lower]], uv_upper = world_xz * u_layer_scale[upper];
+    vec2 uv_lower = world_xz * layerScale(order[lower]), uv_upper = world_xz * layerScale(upper);
     vec4 albedo = mix(layerAlbedo(order[lower], uv_lower, textured), layerAlbedo(upper, uv_upper, textured), t);
 #if MATERIAL_TIER == 0
     vec3 detail = mix(layerDetail(order[lower], uv_lower), layerDetail(upper, uv_upper), t);
@@ -454,14 +428,14 @@ void main() {
     // keeps its tone where the blades fade out (u_grass_far.w = 0 without grass).
     float far_grass = grass * u_grass_far.w * smoothstep(u_grass_fade.x, u_grass_fade.y, dist);
     if (dirt > 0.0) {
-        vec2 uv_dirt = world_xz * u_layer_scale[DIRT];
+        vec2 uv_dirt = world_xz * layerScale(DIRT);
         albedo = mix(albedo, layerAlbedo(DIRT, uv_dirt, textured), dirt);
 #if MATERIAL_TIER == 0
         detail = mix(detail, layerDetail(DIRT, uv_dirt), dirt);
 #endif
     }
     if (rock > 0.0) {
-        vec3 p = (rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * u_layer_scale[ROCK];
+        vec3 p = (rel + vec3(u_tex_offset.x, 0.0, u_tex_offset.y)) * layerScale(ROCK);
         // Planar rock along the normal's main axis (tiers 0 and 1; tier 2: the mean).
         vec3 an = abs(n);
         vec2 main_uv = an.x >= an.y && an.x >= an.z ? p.zy : an.y >= an.z ? p.xz : p.xy;

@@ -12,15 +12,10 @@
 #include "terrain.glsl"
 
 #if defined(TESS_CONTROL_SHADER) || defined(TESS_EVALUATION_SHADER)
-// x: target edge length (px), y: pixels per unit of (length / distance) of the main camera, z:
-// the tessellated range (m), w: largest factor.
-layout(location = 28) uniform vec4 u_tess;
-// x: relief depth (m) below the drawn surface, y: 1 / texture period (m), z, w: camera x, z modulo the period (m).
-layout(location = 29) uniform vec4 u_tess_relief;
-// x, y: distance (m) where the displacement starts to fade, and is gone (factors 1 from there on);
-// z: the layer whose relief displaces (the pixel's layer blend is out of reach per vertex). All
-// from terrain/tess_displacement.h tessRelief(), the CPU mirror the GL test compares with.
-layout(location = 30) uniform vec4 u_tess_fade;
+// u_tess, u_tess_relief and u_tess_fade (terrain_block.glsl): u_tess_fade.xy is where the
+// displacement starts to fade, and is gone (factors 1 from there on); z the layer whose relief
+// displaces (the pixel's layer blend is out of reach per vertex). All from
+// terrain/tess_displacement.h tessRelief(), the CPU mirror the GL test compares with.
 
 // Share of the displacement left at distance d: the outermost tessellated patches meet their
 // untessellated neighbours flat and with factor 1.
@@ -75,9 +70,6 @@ void main() {
 
 #ifdef TESS_EVALUATION_SHADER
 layout(triangles, fractional_odd_spacing, ccw) in;
-#ifdef SHADOW_PASS
-layout(location = 16) uniform mat4 u_shadow_matrix;
-#endif
 layout(binding = BINDING_TEX_3) uniform sampler2DArray u_relief;  // the detail array: relief in alpha
 in vec3 te_rel[];
 in vec2 te_texel[];

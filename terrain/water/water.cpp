@@ -6,11 +6,11 @@
 
 #include "renderer/lighting/local_lights.h"
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "sky/atmosphere.h"
 #include "sky/weather/weather_model.h"
 #include "terrain/water/shaders/water_bindings.glsl"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
@@ -21,6 +21,8 @@
 namespace vista {
 
 namespace {
+
+#include "terrain/water/shaders/water_surface_block.glsl"
 
 constexpr const char* kCopyProgram = "terrain/water/shaders/water_copy.glsl";
 constexpr const char* kUnderwaterProgram = "terrain/water/shaders/underwater.glsl";
@@ -208,7 +210,9 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
             glDisable(GL_CULL_FACE);  // seen from above and from below
             glBindVertexArray(vao_.id());
             const bool lit = lights && view_ == WaterView::Shaded;
-            if (lit) glProgramUniform2ui(program, 0, 0, kLightChunk);
+            WaterSurfaceBlock block{};
+            if (lit) block.u_light_chunk = {0u, kLightChunk};
+            bindPassBlock(rc, program, block);
             draw();
             if (lit && lights->chunks() > 1) {
                 // The lights past the first chunk (lights.glsl chunkOf): the surface again, its
@@ -220,7 +224,8 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
                 glEnable(GL_BLEND);
                 glBlendFunc(GL_ONE, GL_ONE);
                 for (std::uint32_t k = 1; k < lights->chunks(); ++k) {
-                    glProgramUniform2ui(chunk, 0, k * kLightChunk, kLightChunk);
+                    block.u_light_chunk = {k * kLightChunk, kLightChunk};
+                    bindPassBlock(rc, chunk, block);
                     draw();
                 }
                 glDisable(GL_BLEND);
@@ -240,21 +245,21 @@ TextureHandle Water::addVelocityPass(FrameGraph& graph, const RenderContext& rc,
     struct Data {
         TextureHandle depth, velocity;
     };
-    const glm::mat4 prev_clip(prev_clip_from_relative);
-    const glm::vec4 jitter(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
+    WaterSurfaceBlock block{};
+    block.u_prev_clip = glm::mat4(prev_clip_from_relative);
+    block.u_jitter = glm::vec4(rc.jitter_ndc.x, rc.jitter_ndc.y, 0.0f, 0.0f);
     auto draw = visibleDraw(rc);
     return graph.addPass<Data>("water.velocity",
         [&](PassBuilder& b, Data& d) {
             d.depth = b.read(depth);
             d.velocity = b.write(velocity);
         },
-        [this, &rc, prev_clip, jitter, draw](const Data& d, PassContext& ctx) {
+        [this, &rc, block, draw](const Data& d, PassContext& ctx) {
             const TextureDesc& desc = ctx.desc(d.velocity);
             bindTarget(rc.device.framebuffer({ctx.texture(d.velocity)}, ctx.texture(d.depth)), desc.width, desc.height);
             const GLuint program = rc.shaders.id(WaterSurfaceVariant{WaterView::Shaded, std::nullopt, false, false, true}.key());
             glUseProgram(program);
-            glProgramUniformMatrix4fv(program, 1, 1, GL_FALSE, glm::value_ptr(prev_clip));
-            glProgramUniform4fv(program, 5, 1, glm::value_ptr(jitter));
+            bindPassBlock(rc, program, block);
             glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
             // Only where the surface is what the pixel shows (gl_Position is invariant).
             glEnable(GL_DEPTH_TEST);

@@ -107,10 +107,10 @@ TEST_CASE("gl: terrain material tiers draw what the near tier draws everywhere, 
 TEST_CASE("gl: terrain debug views and the wireframe are program variants, not branches of the shaded program") {
     TerrainSettings s;
     for (int tier = 0; tier < kMaterialTiers; ++tier)
-        CHECK(terrainDefines(s, tier) == std::vector<std::string>{"MATERIAL_TIER=" + std::to_string(tier), "MATERIAL_LAYERS=8"});
+        CHECK(terrainDefines(s, tier) == std::vector<std::string>{"MATERIAL_TIER=" + std::to_string(tier)});
     s.view = TerrainView::Error;
     s.wireframe = true;
-    CHECK(terrainDefines(s, 2) == std::vector<std::string>{"TERRAIN_VIEW=4", "TERRAIN_WIREFRAME", "MATERIAL_LAYERS=8"});
+    CHECK(terrainDefines(s, 2) == std::vector<std::string>{"TERRAIN_VIEW=4", "TERRAIN_WIREFRAME"});
     // Every variant the settings can ask for is in the up-front list (allPrograms()).
     const auto programs = terrainPrograms();
     for (TerrainView view : {TerrainView::Shaded, TerrainView::Lod, TerrainView::Morph, TerrainView::Normals, TerrainView::Error,

@@ -7,6 +7,7 @@
 #include "app/scene.h"
 #include "renderer_fixture.h"
 #include "renderer/bindings.h"
+#include "renderer/pass_kit.h"
 #include "renderer/shader_library.h"
 #include "terrain/materials.h"
 #include "terrain/tess_displacement.h"
@@ -22,6 +23,8 @@
 using namespace vista;
 
 namespace {
+
+#include "shaders/pom_probe_block.glsl"
 
 ShaderLibrary& shaders() {
     test::glContext();
@@ -69,12 +72,12 @@ HitErrors pomErrors(const MaterialImages& m, GLuint texture, int layer, int max_
                     std::vector<glm::dvec2>& reference) {
     const int w = 64, h = 48;
     const float depth = 0.02f;  // texture units: 5 texels of relief at 256 texels
+    gl::Buffer block;  // bound until the probe has drawn
     const std::vector<float> texels = test::drawProbe(shaders(), "tests/gl/shaders/pom_probe.glsl", {}, w, h, [&] {
         glBindTextureUnit(binding::kTex0, texture);
         GLint program = 0;
         glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-        glProgramUniform4i(GLuint(program), 0, layer, max_steps, refine, w);
-        glProgramUniform2f(GLuint(program), 1, depth, float(h));
+        block = bindPassBlockOnce(shaders(), GLuint(program), PomProbeBlock{{layer, max_steps, refine, w}, {depth, float(h)}, {}});
     });
     const Relief relief{&m, layer};
     std::vector<double> errors;

@@ -24,7 +24,7 @@ layout(std430, binding = BINDING_COUNTERS) buffer Evaluations { uint u_eval_lo, 
 layout(std430, binding = BINDING_AUX) buffer Exact { uint u_exact_lo, u_exact_hi; };
 #endif
 layout(location = 0) out vec4 o_color;
-layout(location = 0) uniform uvec2 u_light_chunk;  // this draw's chunk of every range: first entry, entry count
+#include "light_shade_block.glsl"
 #ifdef LIGHT_HEAT
 layout(location = 1) out float o_heat;
 #endif

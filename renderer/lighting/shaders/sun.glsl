@@ -9,16 +9,13 @@
 layout(binding = BINDING_TEX_0) uniform sampler2D u_depth;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_albedo;
 layout(binding = BINDING_TEX_2) uniform sampler2D u_normal;
-layout(location = 0) uniform vec3 u_sun_irradiance;  // RGB irradiance of the sun at normal incidence
-layout(location = 1) uniform vec3 u_sky_up;          // RGB sky irradiance on an upward-facing surface
-layout(location = 2) uniform vec3 u_ground_up;       // RGB irradiance from below (ground bounce) on a downward-facing surface
+#include "sun_block.glsl"
 #ifdef HAS_AO
 layout(binding = BINDING_TEX_3) uniform sampler2D u_ao;  // ambient occlusion (r), 1 = open
 #endif
 #ifdef HAS_CLOUD_SHADOW
 #include "../../../sky/shaders/sky_bindings.glsl"
 layout(binding = SKY_TEX_CLOUD_SHADOW) uniform sampler2D u_cloud_shadow;  // sun transmittance through the clouds
-layout(location = 8) uniform vec4 u_cloud_shadow_map;  // xy centre minus camera (x/z m), z 1/extent, w max(sun y, 0.05)
 // The map's texel for a point: its projection along the sun onto y = 0 (sky/clouds/shaders/cloud_shadow.glsl);
 // towards the map's edge the shadow fades out (no streaks of edge texels beyond it).
 float cloudShadow(vec3 pos) {

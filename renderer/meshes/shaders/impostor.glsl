@@ -11,11 +11,7 @@
 layout(std430, binding = BINDING_OBJECT_INSTANCES) readonly buffer Instances { ObjectInstance u_instances[]; };
 layout(std430, binding = BINDING_OBJECT_VISIBLE) readonly buffer Visible { uint u_visible[]; };
 
-layout(location = 0) uniform uint u_region;   // first slot of the model's impostor list
-layout(location = 1) uniform vec3 u_camera;   // camera relative to the anchor (m)
-layout(location = 2) uniform vec4 u_sphere;   // model-space bounding sphere: centre, radius (m)
-layout(location = 5) uniform vec4 u_params;   // fade band start (m), 1 / band width, frames per side, emissive nits
-layout(location = 16) uniform mat4 u_matrix;  // camera-relative world -> clip
+#include "impostor_block.glsl"
 
 #ifdef VERTEX_SHADER
 layout(location = 0) in vec3 a_position;  // the card corner in (right, up), -1..1

@@ -31,20 +31,7 @@
 layout(std430, binding = BINDING_OBJECT_INSTANCES) readonly buffer Instances { ObjectInstance u_instances[]; };
 layout(std430, binding = BINDING_OBJECT_VISIBLE) readonly buffer Visible { uint u_visible[]; };
 
-layout(location = 0) uniform uint u_region;       // first slot of this draw's group
-layout(location = 1) uniform vec3 u_camera;       // camera relative to the anchor (m)
-layout(location = 2) uniform vec4 u_base_color;   // linear RGBA factor
-layout(location = 3) uniform vec4 u_material;     // metallic, roughness, normal scale, occlusion strength
-layout(location = 4) uniform vec4 u_emissive;     // rgb emissive factor x nits, w alpha cutoff
-layout(location = 5) uniform vec4 u_fade;         // IMPOSTOR_FADE: band start (m), 1 / band width (1/m), model-space sphere centre xy ...
-layout(location = 6) uniform float u_fade_centre_z;  // ... and z
-layout(location = 7) uniform vec3 u_sun_irradiance;  // FORWARD: the sun at normal incidence (HDR units)
-layout(location = 8) uniform vec3 u_sky_up;          // FORWARD: sky irradiance on an up-facing surface
-layout(location = 9) uniform vec3 u_ground_up;       // FORWARD: ground bounce on a down-facing surface
-layout(location = 10) uniform uvec2 u_light_chunk;   // FORWARD with lights: this draw's chunk of each light range (lights.glsl chunkOf)
-layout(location = 11) uniform vec4 u_clip;           // FORWARD: camera-relative plane, kept where dot(u_clip, (p, 1)) >= 0
-layout(location = 12) uniform vec4 u_aerial;         // AERIAL_FOG: the volume's layout (renderer/shaders/aerial_fetch.glsl)
-layout(location = 16) uniform mat4 u_matrix;      // camera-relative world -> clip (view, or a shadow view)
+#include "object_block.glsl"
 
 #ifdef VERTEX_SHADER
 #ifdef FORWARD

@@ -11,6 +11,7 @@
 #include "../../../renderer/shaders/common.glsl"
 #include "../../../renderer/shaders/counters.glsl"
 #include "object_common.glsl"
+#include "object_cull_block.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -19,7 +20,6 @@ layout(std430, binding = BINDING_OBJECT_COUNTS) buffer Counts { uint u_counts[];
 #if defined(COUNT_SHADOW)
 layout(std430, binding = BINDING_OBJECT_MODELS) readonly buffer Models { ObjectModel u_models[]; };
 layout(std430, binding = BINDING_COUNTERS) buffer Counters { uint u_shadow_counter[]; };  // objects.shadow_triangles
-layout(location = 0) uniform uint u_model_count;
 void main() {
     uint m = gl_GlobalInvocationID.x;
     if (m >= u_model_count) return;
@@ -36,7 +36,6 @@ struct DrawCommand {
     uint base_instance;
 };
 layout(std430, binding = BINDING_OBJECT_DRAWS) buffer Draws { DrawCommand u_draws[]; };
-layout(location = 0) uniform uint u_draw_count;
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= u_draw_count) return;
@@ -50,12 +49,6 @@ layout(std430, binding = BINDING_COUNTERS) buffer Counters { uint u_instance_cou
 layout(std430, binding = BINDING_AUX) buffer Triangles { uint u_triangle_counter[]; };     // objects.triangles (low, high)
 layout(std430, binding = BINDING_AUX_2) buffer Impostors { uint u_impostor_counter[]; };   // objects.impostors (low, high)
 
-layout(location = 0) uniform uint u_count;          // instances
-layout(location = 1) uniform vec3 u_camera;         // camera relative to the anchor (m)
-layout(location = 2) uniform vec4 u_distances;      // lod1, lod2, max, shadow distance (m; shadow < 0: no casters)
-layout(location = 3) uniform uint u_count_enabled;  // add to the objects.instances / objects.triangles counters
-layout(location = 4) uniform vec4 u_planes[5];      // frustum planes, camera-relative (inside: dot >= 0)
-layout(location = 9) uniform vec2 u_impostor;       // impostor distance, fade band (m)
 
 void main() {
     uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;

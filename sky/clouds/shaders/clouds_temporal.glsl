@@ -16,9 +16,7 @@ layout(binding = BINDING_TEX_0) uniform sampler2D u_clouds;
 layout(binding = BINDING_TEX_1) uniform sampler2D u_distance;
 layout(binding = BINDING_TEX_2) uniform sampler2D u_history;
 layout(binding = BINDING_TEX_3) uniform sampler2D u_history_distance;  // r distance (km), g frames accumulated
-layout(location = 0) uniform mat4 u_prev_clip;
-layout(location = 1) uniform vec4 u_shift;   // xyz this camera minus the previous one (m)
-layout(location = 2) uniform vec4 u_params;  // x blend, y 1: history rejected everywhere, zw this frame's jitter (NDC)
+#include "clouds_temporal_block.glsl"
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_distance;

@@ -16,19 +16,12 @@
 #include "grass_common.glsl"
 
 layout(std430, binding = BINDING_GRASS_BLADES) readonly buffer Blades { GrassBlade u_blades[]; };
-layout(location = 0) uniform int u_segments;     // segments of this draw's blades
-layout(location = 1) uniform uint u_first;       // index of this draw's first blade in u_blades
-layout(location = 2) uniform vec4 u_look;        // root darkening, roughness, normal blend, wetness (0 dry .. 1)
+#include "grass_block.glsl"
 
 #ifdef VERTEX_SHADER
 invariant gl_Position;
 #ifdef GRASS_VELOCITY
-layout(location = 16) uniform mat4 u_prev_clip;  // previous clip from this camera's relative space
 out vec4 v_prev_clip;
-#endif
-#ifdef SHADOW_PASS
-// A shadow view (sun cascade or spot tile): camera-relative world -> clip.
-layout(location = 16) uniform mat4 u_shadow_matrix;
 #endif
 out vec3 v_normal;           // blade normal (world, one side)
 flat out vec3 v_ground;      // terrain normal
@@ -89,7 +82,6 @@ void main() {
 #endif
 
 #if defined(FRAGMENT_SHADER) && defined(GRASS_VELOCITY)
-layout(location = 5) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
 in vec4 v_prev_clip;
 layout(location = 0) out vec4 o_velocity;
 #include "../../../renderer/shaders/surface_velocity.glsl"

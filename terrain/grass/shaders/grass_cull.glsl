@@ -26,29 +26,9 @@ layout(binding = BINDING_TEX_0) uniform sampler2DArray u_height;   // heightmap 
 layout(binding = BINDING_TEX_1) uniform sampler2DArray u_normals;  // world normals
 layout(binding = BINDING_TEX_2) uniform sampler2DArray u_albedo;   // terrain material albedo (band jitter noise)
 
-layout(location = 0) uniform ivec4 u_box;          // box min cell x, z; cells per side; blades per cell
-layout(location = 1) uniform ivec2 u_camera_cell;  // world cell holding the camera
-layout(location = 2) uniform vec4 u_cell;          // camera position in its cell (cells, x z), cell size (m), candidates
-layout(location = 3) uniform vec4 u_radius;        // radius_m, thin start (m), far_keep, lod distance (m)
-layout(location = 4) uniform vec4 u_blade;         // length (m), length variation, width (m), max rest bend (rad)
-layout(location = 5) uniform vec4 u_map;           // camera-relative x, z of texel (0, 0); texel size x, z (m)
-layout(location = 6) uniform vec2 u_height_map;    // height = scale * sample + (offset - camera y)
-layout(location = 7) uniform ivec4 u_tiles;
-layout(location = 8) uniform vec4 u_tile_layer;
-layout(location = 9) uniform vec4 u_bands;         // sand_top, grass_top, snow_start, band_blend
-layout(location = 10) uniform vec4 u_material;     // band_jitter, rock_slope, jitter noise uv per m, unused
-layout(location = 11) uniform vec2 u_tex_offset;   // camera x, z relative to the terrain origin (texture space)
-layout(location = 12) uniform vec4 u_planes[5];    // frustum side and near planes (camera-relative, inward)
-layout(location = 17) uniform vec4 u_wind_a;       // dir x, z; gust origin x, z
-layout(location = 18) uniform vec4 u_wind_b;       // inv gust scale, sway phase, strength, gust
-layout(location = 19) uniform vec4 u_wind_c;       // sway; previous frame's gust origin x, z and sway phase (< 0: none)
-layout(location = 20) uniform vec4 u_color;        // tip colour (linear), colour variation
-layout(location = 21) uniform vec4 u_dry;          // dry colour (linear), dry fraction
-layout(location = 23) uniform ivec2 u_box_mod;     // box min cell modulo cells per side (0..cells-1)
-layout(location = 22) uniform uvec4 u_capacity;    // near, far list capacity; far list start; count blades (0/1)
+#include "grass_cull_block.glsl"
 #ifdef TERRAIN_SPLAT
 layout(binding = BINDING_TEX_5) uniform sampler2DArray u_splat;  // the terrain's splat weights (terrain.glsl's)
-layout(location = 24) uniform ivec4 u_splat_layers[2];           // layer per splat channel (-1: none)
 #endif
 
 shared uint s_drawn;

@@ -24,13 +24,13 @@
 // Both stages: included once per file (the shader library expands each file once).
 #include "../../../renderer/shaders/common.glsl"
 #include "waves.glsl"
+#include "water_surface_block.glsl"
 
 #ifdef VERTEX_SHADER
 invariant gl_Position;
 out vec3 v_position;  // camera-relative, displaced
 out vec2 v_rest;      // camera-relative rest position (x, z)
 #ifdef WATER_VELOCITY
-layout(location = 1) uniform mat4 u_prev_clip;  // previous clip from this camera's relative space
 out vec4 v_prev_clip;
 #endif
 void main() {
@@ -52,7 +52,6 @@ void main() {
 #endif
 
 #if defined(FRAGMENT_SHADER) && defined(WATER_VELOCITY)
-layout(location = 5) uniform vec4 u_jitter;  // xy this frame's jitter (NDC)
 in vec4 v_prev_clip;
 layout(location = 0) out vec4 o_velocity;
 #include "../../../renderer/shaders/surface_velocity.glsl"
@@ -68,7 +67,6 @@ void main() { o_velocity = surfaceVelocity(v_prev_clip, u_jitter.xy); }
 #if defined(LIGHTS_NAIVE) || defined(LIGHTS_TILED) || defined(LIGHTS_CLUSTERED) || defined(LIGHTS_HASHED)
 #define WATER_LOCAL_LIGHTS
 #include "../../../renderer/lighting/shaders/lights.glsl"
-layout(location = 0) uniform uvec2 u_light_chunk;  // this draw's chunk of each light range: first entry, entry count
 #endif
 #ifdef HAS_SUN_SHADOW
 #include "../../../renderer/shadows/shaders/shadows.glsl"

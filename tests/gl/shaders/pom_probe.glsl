@@ -8,8 +8,7 @@
 #ifdef FRAGMENT_SHADER
 #include "../../../renderer/shaders/bindings.glsl"
 layout(binding = BINDING_TEX_0) uniform sampler2DArray u_relief;
-layout(location = 0) uniform ivec4 u_params;  // layer, max linear steps, refinement steps, probe width
-layout(location = 1) uniform vec2 u_probe;    // depth (texture units), probe height (px)
+#include "pom_probe_block.glsl"
 layout(location = 0) out vec4 o_probe;
 
 float pomHeight(vec3 p) {
