@@ -467,7 +467,7 @@ void Terrain::updateStream(const TerrainSettings& s, const Selection& drawn) {
         ++c.missing;
         const TileCache::Entry& e = st.cache().entry(level, tx >> (level - n.level), tz >> (level - n.level));
         const glm::dvec3 p = glm::clamp(glm::dvec3(0.0), n.min_rel, n.max_rel);
-        c.missing_error_px = std::max(c.missing_error_px, double(e.error_m) * error_scale_ / std::max(glm::length(p), 1e-3));
+        c.missing_error_px = std::max(c.missing_error_px, missingTileErrorPx(e.error_m, error_scale_, glm::length(p), near_m_));
     }
     counters_.stream = c;
 }
@@ -498,6 +498,7 @@ const Selection& Terrain::select(const glm::dvec3& camera, const glm::dmat4& vie
     }
     // The mapping is centred on the origin: select with the camera relative to the terrain.
     const Frustum view = frustumFromViewProj(view_proj);
+    near_m_ = -view[4].w;  // the camera (the origin) lies near_m behind the normalised near plane
     frusta_.assign(1, caster_frustum ? *caster_frustum : view);
     frusta_.insert(frusta_.end(), extra.begin(), extra.end());
     selectNodes(tree_, mapping_, lod_, camera - s.origin, frusta_, selection_, error_metric ? &bias_ : nullptr);
