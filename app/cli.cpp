@@ -526,11 +526,11 @@ int runCommand(int argc, char** argv) {
     int gen_size = 1025;
     std::uint32_t gen_seed = 1;
     std::string gen_out;
-    CLI::App* gen_cmd = app.add_subcommand("gen-heightmap", "generate a deterministic island heightmap (16-bit PNG or float EXR)");
+    CLI::App* gen_cmd = app.add_subcommand("gen-heightmap", "generate a deterministic island heightmap (16-bit PNG, float EXR, or float TIFF written row by row)");
     bool gen_force = false;
-    gen_cmd->add_option("--size", gen_size, "samples per side, 2..16385 (2^n + 1 suits the quadtree)")->check(kDecimal);
+    gen_cmd->add_option("--size", gen_size, "samples per side, 2..65537 (.tif; .png and .exr up to 16385; 2^n + 1 suits the quadtree)")->check(kDecimal);
     gen_cmd->add_option("--seed", gen_seed, "random seed; the same seed gives the same file everywhere")->check(kDecimal);
-    gen_cmd->add_option("--out", gen_out, "output file (.png or .exr)")->required();
+    gen_cmd->add_option("--out", gen_out, "output file (.png, .exr, or .tif for maps larger than memory)")->required();
     gen_cmd->add_flag("--force", gen_force, "replace an existing --out file");
     std::string props_out = "data/props";
     std::uint32_t props_seed = 1;

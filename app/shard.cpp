@@ -117,12 +117,39 @@ std::string sceneText(const Settings& settings) {
     return saveIniString(s);
 }
 
+namespace {
+
+// Files up to this size are hashed whole; a larger map (a 4 GB gen-heightmap TIFF, streamed from
+// its tile cache) by its size, modification time and first kInputHashBytes: reading it all took
+// longer than the time to first frame allows, and held it in memory twice.
+constexpr std::uintmax_t kInputHashBytes = std::uintmax_t(256) << 20;
+
+// hash, continued over an input file's bytes (read a chunk at a time); unchanged when unreadable.
+std::uint64_t hashInput(const std::filesystem::path& file, std::uint64_t hash) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return hash;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    if (!ec && size > kInputHashBytes) {
+        const auto time = std::filesystem::last_write_time(file, ec).time_since_epoch().count();
+        hash = fnv1a64("size " + std::to_string(size) + " time " + std::to_string(time), hash);
+    }
+    std::string chunk(std::size_t(1) << 20, '\0');
+    for (std::uintmax_t done = 0; in && done < kInputHashBytes; done += chunk.size()) {
+        in.read(chunk.data(), std::streamsize(chunk.size()));
+        hash = fnv1a64(std::string_view(chunk.data(), std::size_t(in.gcount())), hash);
+    }
+    return hash;
+}
+
+}  // namespace
+
 std::string sceneHash(const Settings& settings) {
     std::uint64_t hash = fnv1a64(sceneText(settings));
     if (settings.terrain.enabled && !settings.terrain.heightmap.empty())
-        if (std::optional<std::string> bytes = readAll(resolveInput(settings.terrain.heightmap))) hash = fnv1a64(*bytes, hash);
+        hash = hashInput(resolveInput(settings.terrain.heightmap), hash);
     if (settings.terrain.enabled && !settings.terrain.dem.empty())  // a VRT's own text only, not its sources
-        if (std::optional<std::string> bytes = readAll(resolveInput(settings.terrain.dem))) hash = fnv1a64(*bytes, hash);
+        hash = hashInput(resolveInput(settings.terrain.dem), hash);
     return hex64(hash);
 }
 

@@ -1,9 +1,10 @@
-// `vista terrain-cache`: load the input as a DEM (GDAL) or, when it has no georeferencing, as a
-// heightmap image; check any cache already there against the input's key; build when needed.
+// `vista terrain-cache`: load the input as a DEM (GDAL) or, when it has no georeferencing, read
+// it as a heightmap image (a band of rows at a time when it has one channel); check any cache already there against the input's key; build when needed.
 #include "app/terrain_cache_cmd.h"
 
 #include "app/progress.h"
 #include "terrain/dem.h"
+#include "terrain/heightmap_rows.h"
 #include "terrain/tile_cache.h"
 
 #include <chrono>
@@ -37,20 +38,30 @@ int runTerrainCache(const TerrainCacheOptions& o) {
         std::fprintf(stderr, "vista: %s: rebuilding\n", why.c_str());
     }
 
-    // A DEM when GDAL finds georeferencing; a plain image goes through OpenImageIO instead.
+    // A DEM when GDAL finds georeferencing; a plain image goes through OpenImageIO instead: a
+    // one-channel image (a gen-heightmap TIFF, a 16-bit PNG) a band of rows at a time, never
+    // whole, anything else (EXR, RGB) loaded whole.
     InputErrors errors;
     Dem dem = loadDem(o.input, DemNodata::Fill, 1.0, errors);
     Heightmap map;
     TerrainMapping mapping;
+    std::unique_ptr<HeightmapRows> rows;
     if (!dem.map.samples.empty()) {
         mapping = demMapping(dem.info, dem.map.width, dem.map.height);
         map = std::move(dem.map);
     } else if (errors.size() == 1 && errors[0].message.find("no geotransform") != std::string::npos) {
         errors.clear();
-        map = loadHeightmap(o.input, 0, 0, errors);
+        std::string not_rows;
+        rows = HeightmapRows::open(o.input, not_rows);
+        if (rows) {
+            map.width = rows->width();
+            map.height = rows->height();
+        } else {
+            map = loadHeightmap(o.input, 0, 0, errors);
+        }
         mapping = TerrainMapping{o.size_m, o.height_scale_m, o.height_offset_m, map.width, map.height};
     }
-    if (map.samples.empty()) {
+    if (!rows && map.samples.empty()) {
         for (const auto& e : errors) std::fprintf(stderr, "vista: %s\n", e.str().c_str());
         return 2;
     }
@@ -58,11 +69,17 @@ int runTerrainCache(const TerrainCacheOptions& o) {
     int total = 0;
     for (const auto& l : tileCacheLevels(map.width, map.height, o.tile)) total += l.tiles_x * l.tiles_z;
     Progress progress(total, "terrain-cache");
-    why = buildTileCache(map, mapping, key, o.tile, out, true, [&](int done, int) {
+    auto report = [&](int done, int) {
         if (o.progress) progress.update(done);
-    });
+    };
+    if (rows) {
+        auto read = [&](int z, float* row) { return rows->read(z, row); };
+        why = buildTileCache(map.width, map.height, read, mapping, key, o.tile, out, true, report);
+    } else {
+        why = buildTileCache(map, mapping, key, o.tile, out, true, report);
+    }
     if (o.progress) progress.finish();
-    if (!why.empty()) return fail(why, 1);
+    if (!why.empty()) return fail(why, rows && why.rfind(o.input.string(), 0) == 0 ? 2 : 1);
     std::printf("wrote %s: %dx%d samples, %d tiles of %d, %.1f MB, in %.2f s\n", out.string().c_str(), map.width, map.height,
                 total, o.tile, double(std::filesystem::file_size(out)) / 1e6,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -176,14 +176,16 @@ std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scal
     const int width = GDALGetRasterXSize(ds), height = GDALGetRasterYSize(ds);
     if (width < 2 || height < 2)
         return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples; a DEM needs at least 2x2";
-    const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * sizeof(float);
-    if (bytes > max_bytes)
-        return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples, " + std::to_string(bytes) +
-               " bytes as floats, over the limit of " + std::to_string(max_bytes) + " bytes";
+    // Georeferencing before the size: a plain image larger than a DEM may be (a gen-heightmap
+    // TIFF) is told to be a heightmap, which vista terrain-cache reads a band of rows at a time.
     double gt[6];
     if (GDALGetGeoTransform(ds, gt) != CE_None)
         return "has no geotransform (no georeferencing, " + info.driver +
                "); a DEM needs one to give its texel spacing; use [terrain] heightmap with size_m for a plain image";
+    const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * sizeof(float);
+    if (bytes > max_bytes)
+        return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples, " + std::to_string(bytes) +
+               " bytes as floats, over the limit of " + std::to_string(max_bytes) + " bytes";
     for (double v : gt)
         if (!std::isfinite(v)) return "has a geotransform with a non-finite term; accepted: finite numbers";
     if (gt[2] != 0.0 || gt[4] != 0.0)

@@ -12,8 +12,14 @@
 #include <cstdio>
 #include <cctype>
 #include <cmath>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 // Compilers fuse a*b+c into one FMA where the target has it (aarch64, x86 with -march=native),
 // which changes the generator's bits between machines: keep every multiply and add separate.
@@ -415,37 +421,69 @@ void parallelRows(int rows, F&& rowFn) {
     for (auto& th : pool) th.join();
 }
 
-// Piecewise-linear remap: [min, sea] -> [0, 0.12], [sea, max] -> [0.12, 1].
+// Piecewise-linear remap: [min, sea] -> [0, 0.12], [sea, max] -> [0.12, 1], from the map's
+// smallest and largest value (one pass finds them, the next applies the remap).
+struct Remap {
+    float mn, mx, sea;
+    Remap(float lo, float hi, float sea_level)
+        : mn(std::min(lo, sea_level - 1e-6f)), mx(std::max(hi, sea_level + 1e-6f)), sea(sea_level) {}
+    float operator()(float v) const { return v < sea ? 0.12f * (v - mn) / (sea - mn) : 0.12f + 0.88f * (v - sea) / (mx - sea); }
+};
+
 void remap(std::vector<float>& h, float sea) {
     auto [lo, hi] = std::minmax_element(h.begin(), h.end());
-    float mn = std::min(*lo, sea - 1e-6f), mx = std::max(*hi, sea + 1e-6f);
-    for (float& v : h) v = v < sea ? 0.12f * (v - mn) / (sea - mn) : 0.12f + 0.88f * (v - sea) / (mx - sea);
+    const Remap r(*lo, *hi, sea);
+    for (float& v : h) v = r(v);
 }
 
 // Thermal erosion: wherever the drop to a neighbour exceeds the talus threshold, half of the
 // largest excess slides down, shared among the lower neighbours by how far they are over it.
 // Sequential in place, so the order (and the result) is fixed.
-void thermalErosion(std::vector<float>& h, int n, float talus, int passes) {
-    static constexpr int dx[8] = {-1, 0, 1, -1, 1, -1, 0, 1}, dz[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+struct Talus {
     float limit[8];
-    for (int k = 0; k < 8; ++k) limit[k] = (dx[k] != 0 && dz[k] != 0) ? talus * 1.41421356f : talus;
-    for (int pass = 0; pass < passes; ++pass)
-        for (int z = 1; z < n - 1; ++z)
-            for (int x = 1; x < n - 1; ++x) {
-                float* c = &h[std::size_t(z) * std::size_t(n) + std::size_t(x)];
-                float excess[8], total = 0, largest = 0;
-                for (int k = 0; k < 8; ++k) {
-                    float e = *c - c[dz[k] * n + dx[k]] - limit[k];
-                    excess[k] = e > 0 ? e : 0;
-                    total += excess[k];
-                    largest = std::max(largest, excess[k]);
-                }
-                if (total <= 0) continue;
-                float moved = 0.5f * largest;
-                for (int k = 0; k < 8; ++k) c[dz[k] * n + dx[k]] += moved * excess[k] / total;
-                *c -= moved;
-            }
+    explicit Talus(float talus) {
+        for (int k = 0; k < 8; ++k) limit[k] = (kDx[k] != 0 && kDz[k] != 0) ? talus * 1.41421356f : talus;
+    }
+    static constexpr int kDx[8] = {-1, 0, 1, -1, 1, -1, 0, 1}, kDz[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+};
+
+// One row z (1 .. n - 2) of one pass; rows z - 1 .. z + 1 lie at c - n, c, c + n (stride n).
+void erodeRow(float* row, int n, const Talus& t) {
+    for (int x = 1; x < n - 1; ++x) {
+        float* c = row + x;
+        float excess[8], total = 0, largest = 0;
+        for (int k = 0; k < 8; ++k) {
+            float e = *c - c[Talus::kDz[k] * n + Talus::kDx[k]] - t.limit[k];
+            excess[k] = e > 0 ? e : 0;
+            total += excess[k];
+            largest = std::max(largest, excess[k]);
+        }
+        if (total <= 0) continue;
+        float moved = 0.5f * largest;
+        for (int k = 0; k < 8; ++k) c[Talus::kDz[k] * n + Talus::kDx[k]] += moved * excess[k] / total;
+        *c -= moved;
+    }
 }
+
+void thermalErosion(std::vector<float>& h, int n, float talus, int passes) {
+    const Talus t(talus);
+    for (int pass = 0; pass < passes; ++pass)
+        for (int z = 1; z < n - 1; ++z) erodeRow(&h[std::size_t(z) * std::size_t(n)], n, t);
+}
+
+// Talus of ~40 degrees (tan = 0.84) under the intended mapping (8192 m across, value 1 =
+// 600 m), per texel, so the look does not depend on the resolution.
+float islandTalus(int n) { return 0.84f * (8192.0f / float(n - 1)) / 600.0f; }
+
+// Row z of the raw island (before the remaps and erosion).
+void islandRow(const IslandParams& params, std::uint32_t seed, int n, int z, float* out) {
+    for (int x = 0; x < n; ++x) {
+        float px = 2.0f * float(x) / float(n - 1) - 1.0f, py = 2.0f * float(z) / float(n - 1) - 1.0f;
+        out[x] = islandHeight(px, py, params, seed);
+    }
+}
+
+std::uint32_t islandSeed(const IslandParams& params) { return mix32(params.seed + 0x6a09e667U); }
 
 }  // namespace
 
@@ -454,21 +492,146 @@ Heightmap generateIsland(const IslandParams& params) {
     int n = std::max(params.size, 2);
     map.width = map.height = n;
     map.samples.resize(std::size_t(n) * std::size_t(n));
-    std::uint32_t seed = mix32(params.seed + 0x6a09e667U);
-    parallelRows(n, [&](int z) {
-        for (int x = 0; x < n; ++x) {
-            float px = 2.0f * float(x) / float(n - 1) - 1.0f, py = 2.0f * float(z) / float(n - 1) - 1.0f;
-            map.samples[std::size_t(z) * std::size_t(n) + std::size_t(x)] = islandHeight(px, py, params, seed);
-        }
-    });
+    const std::uint32_t seed = islandSeed(params);
+    parallelRows(n, [&](int z) { islandRow(params, seed, n, z, &map.samples[std::size_t(z) * std::size_t(n)]); });
     remap(map.samples, 0.0f);
-    // Talus of ~40 degrees (tan = 0.84) under the intended mapping (8192 m across, value 1 =
-    // 600 m), per texel, so the look does not depend on the resolution.
-    float talus = 0.84f * (8192.0f / float(n - 1)) / 600.0f;
-    thermalErosion(map.samples, n, talus, params.erosion_passes);
+    thermalErosion(map.samples, n, islandTalus(n), params.erosion_passes);
     // Erosion lowers the peaks and fills the sea floor a little: restore 0 .. 0.12 .. 1.
     remap(map.samples, 0.12f);
     return map;
+}
+
+namespace {
+
+// The scratch file of generateIslandRows: size² floats, row by row, removed when closed.
+class ScratchRows {
+public:
+    ScratchRows(const std::filesystem::path& file, int n) : n_(n) {
+        fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        if (fd_ < 0) {
+            why_ = file.string() + ": cannot create the scratch file (" + std::strerror(errno) + ")";
+            return;
+        }
+        ::unlink(file.c_str());  // gone with the process, whatever happens
+    }
+    ~ScratchRows() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    const std::string& why() const { return why_; }
+    bool write(int z, int rows, const float* data) { return io(z, rows, const_cast<float*>(data), true); }
+    bool read(int z, int rows, float* data) { return io(z, rows, data, false); }
+
+private:
+    bool io(int z, int rows, float* data, bool writing) {
+        std::size_t bytes = std::size_t(rows) * std::size_t(n_) * sizeof(float);
+        off_t at = off_t(z) * off_t(n_) * off_t(sizeof(float));
+        auto* p = reinterpret_cast<char*>(data);
+        while (bytes > 0 && why_.empty()) {
+            const ssize_t done = writing ? ::pwrite(fd_, p, bytes, at) : ::pread(fd_, p, bytes, at);
+            if (done <= 0) why_ = std::string("the scratch file failed (") + (done < 0 ? std::strerror(errno) : "short") + ")";
+            else {
+                p += done;
+                at += done;
+                bytes -= std::size_t(done);
+            }
+        }
+        return why_.empty();
+    }
+    int n_, fd_ = -1;
+    std::string why_;
+};
+
+}  // namespace
+
+std::string generateIslandRows(const IslandParams& params, const std::filesystem::path& scratch_file,
+                               const std::function<std::string(int, const float*)>& row,
+                               const std::function<void(double)>& progress) {
+    const int n = std::max(params.size, 2);
+    const std::uint32_t seed = islandSeed(params);
+    ScratchRows scratch(scratch_file, n);
+    if (!scratch.why().empty()) return scratch.why();
+    const std::size_t stride = std::size_t(n);
+    auto report = [&](double done) {
+        if (progress) progress(done);
+    };
+
+    // 1. The raw heights, a band of rows at a time (rows on the cores), and their range.
+    constexpr int kBand = 64;
+    std::vector<float> band(std::size_t(kBand) * stride);
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (int z0 = 0; z0 < n; z0 += kBand) {
+        const int rows = std::min(kBand, n - z0);
+        parallelRows(rows, [&](int z) { islandRow(params, seed, n, z0 + z, &band[std::size_t(z) * stride]); });
+        for (std::size_t i = 0; i < std::size_t(rows) * stride; ++i) {
+            lo = std::min(lo, band[i]);
+            hi = std::max(hi, band[i]);
+        }
+        if (!scratch.write(z0, rows, band.data())) return scratch.why();
+        report(0.8 * double(z0 + rows) / double(n));
+    }
+
+    // 2. The first remap and the erosion passes, pipelined in a window of rows: pass p works on
+    // row s - 3p at step s. Pass p + 1's row z touches rows z - 1 .. z + 1 only, pass p's later
+    // rows (>= z + 3) rows from z + 2 on: the same operations on the same values as pass after
+    // pass over the whole map. A row is final once the last pass has worked on the row below it.
+    const Remap first(lo, hi, 0.0f);
+    const Talus talus(islandTalus(n));
+    const int passes = n >= 3 ? std::max(params.erosion_passes, 0) : 0, lag = 3;
+    const int capacity = lag * passes + kBand;
+    std::vector<float> window(std::size_t(capacity) * stride);
+    int base = 0, loaded = 0, flushed = 0;  // window holds rows [base, loaded); rows < flushed are written back
+    lo = std::numeric_limits<float>::infinity();
+    hi = -lo;
+    auto at = [&](int z) { return &window[std::size_t(z - base) * stride]; };
+    auto load = [&](int upto) {
+        for (; loaded < std::min(upto, n); ++loaded) {
+            if (loaded - base == capacity) {  // drop the rows already written back
+                std::memmove(window.data(), at(flushed), std::size_t(loaded - flushed) * stride * sizeof(float));
+                base = flushed;
+            }
+            float* r = at(loaded);
+            if (!scratch.read(loaded, 1, r)) return false;
+            for (int x = 0; x < n; ++x) r[x] = first(r[x]);
+        }
+        return true;
+    };
+    auto flush = [&](int upto) {
+        for (; flushed < upto; ++flushed) {
+            const float* r = at(flushed);
+            for (int x = 0; x < n; ++x) {
+                lo = std::min(lo, r[x]);
+                hi = std::max(hi, r[x]);
+            }
+            if (!scratch.write(flushed, 1, r)) return false;
+        }
+        return true;
+    };
+    const int steps = passes > 0 ? n - 2 + lag * (passes - 1) : 0;
+    for (int s = 1; s <= steps; ++s) {
+        if (!load(s + 2)) return scratch.why();
+        for (int p = 0; p < passes; ++p)
+            if (const int z = s - lag * p; z >= 1 && z <= n - 2) erodeRow(at(z), n, talus);
+        if (!flush(std::max(0, s - lag * (passes - 1)))) return scratch.why();
+        if (s % kBand == 0) report(0.8 + 0.1 * double(s) / double(steps));
+    }
+    // The rest is final (all of it without erosion): a row at a time through the window.
+    for (int z = flushed; z < n; ++z)
+        if (!load(z + 1) || !flush(z + 1)) return scratch.why();
+
+    // 3. The second remap, row by row to the caller.
+    const Remap second(lo, hi, 0.12f);
+    std::vector<float>& out = band;
+    for (int z0 = 0; z0 < n; z0 += kBand) {
+        const int rows = std::min(kBand, n - z0);
+        if (!scratch.read(z0, rows, out.data())) return scratch.why();
+        for (int z = 0; z < rows; ++z) {
+            float* r = &out[std::size_t(z) * stride];
+            for (int x = 0; x < n; ++x) r[x] = second(r[x]);
+            if (std::string why = row(z0 + z, r); !why.empty()) return why;
+        }
+        report(0.9 + 0.1 * double(z0 + rows) / double(n));
+    }
+    return {};
 }
 
 }  // namespace vista

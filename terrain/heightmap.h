@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,5 +62,14 @@ struct IslandParams {
 // A deterministic island in [0, 1]: sea floor near 0, shoreline around 0.12, peaks near 1.
 // Same params, same bits on every machine.
 Heightmap generateIsland(const IslandParams& params);
+
+// The same island without holding it (maps larger than memory, `vista gen-heightmap --size
+// 65537`): the same bits as generateIsland, handed to row(z, samples) for z = 0, 1, ... in order
+// (its non-empty return stops the run and is returned). The raw and eroded heights pass through
+// scratch_file (size² floats; created, unlinked at once, so it never outlives the process), and
+// a window of rows through memory. progress(0..1) now and then. "" on success, else why.
+std::string generateIslandRows(const IslandParams& params, const std::filesystem::path& scratch_file,
+                               const std::function<std::string(int z, const float* samples)>& row,
+                               const std::function<void(double)>& progress = {});
 
 }  // namespace vista

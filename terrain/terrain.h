@@ -229,6 +229,7 @@ private:
     glm::vec2 far_grass_fade_{0.0f, 1.0f};
     float wetness_ = 0.0f;
     double error_scale_ = 1.0;          // the main camera's pixels per (length / distance), from select()
+    double near_m_ = 0.1;               // the main camera's near plane (m), from select()
     std::size_t tess_count_ = 0;        // instances_ (a prefix of the near tier) drawn tessellated
     std::vector<TerrainInstance> shadow_split_;  // scratch for shadowInstances(): beyond the tessellated range
     ShaderLibrary* shaders_ = nullptr;  // for the tessellated shadow program

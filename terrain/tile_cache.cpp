@@ -1,11 +1,13 @@
 // Tile cache: the pyramid's maths (halving, normals, per-tile min/max and error), the file
-// writer (streamed through an AtomicWriter, two levels in memory at a time) and the reader
+// writer (the map's rows streamed through every level's band of rows into an AtomicWriter: never
+// the map in memory) and the reader
 // (index in memory, tiles read with pread and checked one by one).
 //
 // File layout, little-endian as the machine writes it (the key has the input's mtime, so a
 // cache is never carried between machines anyway):
 //   Header  magic "VTCACHE1", version, tile, key, width, height, level count, mapping
-//   Tiles   per tile: heights (float), normals (RGBA8 snorm), level by level, row by row
+//   Tiles   per tile: heights (float), normals (RGBA8 snorm), in the order the writer makes
+//           them (a tile row of a level as soon as its rows are in: the levels interleave)
 //   Index   one Entry per tile: offset, hash, size, min/max, error
 //   Trailer index offset, FNV-1a of header + index, end marker "VTCEND01"
 #include "terrain/tile_cache.h"
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 
 namespace vista {
@@ -63,32 +66,81 @@ void around(int x, int coarse_width, int width, int& i0, int& i1, double& f) {
     f = p1 > p0 ? double(x - p0) / double(p1 - p0) : 0.0;
 }
 
-// Largest |fine - coarse interpolated| (in sample units) over the fine samples of each coarse
-// tile: those between its first and last coarse samples, borders included (shared).
-std::vector<float> levelErrors(const Heightmap& fine, const Heightmap& coarse, const TileCacheLevel& level, int tile) {
-    std::vector<float> errors(std::size_t(level.tiles_x) * std::size_t(level.tiles_z), 0.0f);
-    for (int tz = 0; tz < level.tiles_z; ++tz)
-        for (int tx = 0; tx < level.tiles_x; ++tx) {
-            const int x_end = parentPosition(std::min(tx * tile + tile, coarse.width - 1), fine.width);
-            const int z_end = parentPosition(std::min(tz * tile + tile, coarse.height - 1), fine.height);
-            float worst = 0.0f;
-            for (int z = parentPosition(tz * tile, fine.height); z <= z_end; ++z) {
-                int z0, z1;
-                double fz;
-                around(z, coarse.height, fine.height, z0, z1, fz);
-                for (int x = parentPosition(tx * tile, fine.width); x <= x_end; ++x) {
-                    int x0, x1;
-                    double fx;
-                    around(x, coarse.width, fine.width, x0, x1, fx);
-                    const double top = coarse.at(x0, z0) + (coarse.at(x1, z0) - coarse.at(x0, z0)) * fx;
-                    const double bottom = coarse.at(x0, z1) + (coarse.at(x1, z1) - coarse.at(x0, z1)) * fx;
-                    worst = std::max(worst, float(std::abs(double(fine.at(x, z)) - (top + (bottom - top) * fz))));
-                }
-            }
-            errors[std::size_t(tz) * std::size_t(level.tiles_x) + std::size_t(tx)] = worst;
+// Largest |fine - coarse interpolated| (in sample units) over the fine samples of coarse tile
+// (tx, tz): those between its first and last coarse samples, borders included (shared). Level
+// is a Heightmap or a Band (at(x, z), width, height).
+template <class Level>
+float tileError(const Level& fine, const Level& coarse, int tile, int tx, int tz) {
+    const int x_end = parentPosition(std::min(tx * tile + tile, coarse.width - 1), fine.width);
+    const int z_end = parentPosition(std::min(tz * tile + tile, coarse.height - 1), fine.height);
+    float worst = 0.0f;
+    for (int z = parentPosition(tz * tile, fine.height); z <= z_end; ++z) {
+        int z0, z1;
+        double fz;
+        around(z, coarse.height, fine.height, z0, z1, fz);
+        for (int x = parentPosition(tx * tile, fine.width); x <= x_end; ++x) {
+            int x0, x1;
+            double fx;
+            around(x, coarse.width, fine.width, x0, x1, fx);
+            const double top = coarse.at(x0, z0) + (coarse.at(x1, z0) - coarse.at(x0, z0)) * fx;
+            const double bottom = coarse.at(x0, z1) + (coarse.at(x1, z1) - coarse.at(x0, z1)) * fx;
+            worst = std::max(worst, float(std::abs(double(fine.at(x, z)) - (top + (bottom - top) * fz))));
         }
-    return errors;
+    }
+    return worst;
 }
+
+// The normal of sample (x, z) (central differences, one-sided at the edges) as RGBA8 snorm.
+template <class Level>
+void normalAt(const Level& level, int x, int z, double texel_x_m, double texel_z_m, double height_scale_m, std::int8_t* n) {
+    const int xl = std::max(x - 1, 0), xr = std::min(x + 1, level.width - 1);
+    const int zu = std::max(z - 1, 0), zd = std::min(z + 1, level.height - 1);
+    const double dx = (double(level.at(xr, z)) - level.at(xl, z)) * height_scale_m / (double(xr - xl) * texel_x_m);
+    const double dz = (double(level.at(x, zd)) - level.at(x, zu)) * height_scale_m / (double(zd - zu) * texel_z_m);
+    const double len = std::sqrt(dx * dx + 1.0 + dz * dz);
+    n[0] = snorm8(-dx / len);
+    n[1] = snorm8(1.0 / len);
+    n[2] = snorm8(-dz / len);
+    n[3] = 0;
+}
+
+// Tile (tx, tz) of a level: its samples, normal(x, z, out) of each, min/max (m).
+template <class Level, class Normal>
+CacheTile cut(const Level& level, const Normal& normal, int tile, int tx, int tz, const TerrainMapping& mapping) {
+    CacheTile t;
+    const int x0 = tx * tile, z0 = tz * tile;
+    t.width = std::min(tile + 1, level.width - x0);
+    t.height = std::min(tile + 1, level.height - z0);
+    t.heights.resize(std::size_t(t.width) * std::size_t(t.height));
+    t.normals.resize(t.heights.size() * 4);
+    float lo = level.at(x0, z0), hi = lo;
+    for (int z = 0; z < t.height; ++z)
+        for (int x = 0; x < t.width; ++x) {
+            const std::size_t to = std::size_t(z) * std::size_t(t.width) + std::size_t(x);
+            t.heights[to] = level.at(x0 + x, z0 + z);
+            normal(x0 + x, z0 + z, &t.normals[to * 4]);
+            lo = std::min(lo, t.heights[to]);
+            hi = std::max(hi, t.heights[to]);
+        }
+    const double a = mapping.height_offset_m + mapping.height_scale_m * double(lo);
+    const double b = mapping.height_offset_m + mapping.height_scale_m * double(hi);
+    t.min_m = float(std::min(a, b));
+    t.max_m = float(std::max(a, b));
+    return t;
+}
+
+// The rows of one level the writer still needs: [first, first + rows.size()).
+struct Band {
+    int width = 0, height = 0;
+    int first = 0;
+    int next_tile_row = 0;  // tile rows before it are written
+    std::deque<std::vector<float>> rows;
+    float at(int x, int z) const { return rows[std::size_t(z - first)][std::size_t(x)]; }
+    int end() const { return first + int(rows.size()); }
+    void dropBefore(int z) {
+        for (; first < z && !rows.empty(); ++first) rows.pop_front();
+    }
+};
 
 }  // namespace
 
@@ -135,54 +187,39 @@ Heightmap halveLevel(const Heightmap& level) {
 std::vector<std::int8_t> levelNormals(const Heightmap& level, double texel_x_m, double texel_z_m, double height_scale_m) {
     std::vector<std::int8_t> normals(level.samples.size() * 4);
     for (int z = 0; z < level.height; ++z)
-        for (int x = 0; x < level.width; ++x) {
-            const int xl = std::max(x - 1, 0), xr = std::min(x + 1, level.width - 1);
-            const int zu = std::max(z - 1, 0), zd = std::min(z + 1, level.height - 1);
-            const double dx = (double(level.at(xr, z)) - level.at(xl, z)) * height_scale_m / (double(xr - xl) * texel_x_m);
-            const double dz = (double(level.at(x, zd)) - level.at(x, zu)) * height_scale_m / (double(zd - zu) * texel_z_m);
-            const double len = std::sqrt(dx * dx + 1.0 + dz * dz);
-            std::int8_t* n = &normals[(std::size_t(z) * std::size_t(level.width) + std::size_t(x)) * 4];
-            n[0] = snorm8(-dx / len);
-            n[1] = snorm8(1.0 / len);
-            n[2] = snorm8(-dz / len);
-            n[3] = 0;
-        }
+        for (int x = 0; x < level.width; ++x)
+            normalAt(level, x, z, texel_x_m, texel_z_m, height_scale_m,
+                     &normals[(std::size_t(z) * std::size_t(level.width) + std::size_t(x)) * 4]);
     return normals;
 }
 
 CacheTile cutTile(const Heightmap& level, const std::vector<std::int8_t>& normals, int tile, int tx, int tz,
                   const TerrainMapping& mapping) {
-    CacheTile t;
-    const int x0 = tx * tile, z0 = tz * tile;
-    t.width = std::min(tile + 1, level.width - x0);
-    t.height = std::min(tile + 1, level.height - z0);
-    t.heights.resize(std::size_t(t.width) * std::size_t(t.height));
-    t.normals.resize(t.heights.size() * 4);
-    float lo = level.at(x0, z0), hi = lo;
-    for (int z = 0; z < t.height; ++z)
-        for (int x = 0; x < t.width; ++x) {
-            const std::size_t to = std::size_t(z) * std::size_t(t.width) + std::size_t(x);
-            const std::size_t from = std::size_t(z0 + z) * std::size_t(level.width) + std::size_t(x0 + x);
-            t.heights[to] = level.samples[from];
-            std::memcpy(&t.normals[to * 4], &normals[from * 4], 4);
-            lo = std::min(lo, t.heights[to]);
-            hi = std::max(hi, t.heights[to]);
-        }
-    const double a = mapping.height_offset_m + mapping.height_scale_m * double(lo);
-    const double b = mapping.height_offset_m + mapping.height_scale_m * double(hi);
-    t.min_m = float(std::min(a, b));
-    t.max_m = float(std::max(a, b));
-    return t;
+    auto normal = [&](int x, int z, std::int8_t* n) {
+        std::memcpy(n, &normals[(std::size_t(z) * std::size_t(level.width) + std::size_t(x)) * 4], 4);
+    };
+    return cut(level, normal, tile, tx, tz, mapping);
 }
 
 std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, const TileCacheKey& key, int tile,
                            const std::filesystem::path& file, bool force, const std::function<void(int, int)>& progress) {
-    if (tile < 2 || tile > 4096) return file.string() + ": tile size " + std::to_string(tile) + " is not accepted; accepted: 2..4096";
     if (map.width < 2 || map.height < 2 || map.samples.size() != std::size_t(map.width) * std::size_t(map.height))
         return file.string() + ": the map is empty or its size does not match its samples";
+    auto rows = [&](int z, float* row) {
+        std::memcpy(row, &map.samples[std::size_t(z) * std::size_t(map.width)], std::size_t(map.width) * sizeof(float));
+        return std::string();
+    };
+    return buildTileCache(map.width, map.height, rows, mapping, key, tile, file, force, progress);
+}
+
+std::string buildTileCache(int width, int height, const TileCacheRows& rows, const TerrainMapping& mapping,
+                           const TileCacheKey& key, int tile, const std::filesystem::path& file, bool force,
+                           const std::function<void(int, int)>& progress) {
+    if (tile < 2 || tile > 4096) return file.string() + ": tile size " + std::to_string(tile) + " is not accepted; accepted: 2..4096";
+    if (width < 2 || height < 2) return file.string() + ": the map is empty";
     // Refused before any work when the file exists (without force) or its folder is missing.
     if (std::string why = checkOutputFile(file, force, "--out"); !why.empty()) return why;
-    const std::vector<TileCacheLevel> levels = tileCacheLevels(map.width, map.height, tile);
+    const std::vector<TileCacheLevel> levels = tileCacheLevels(width, height, tile);
     int total = 0;
     for (const auto& l : levels) total += l.tiles_x * l.tiles_z;
 
@@ -192,8 +229,8 @@ std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, 
     header.version = kVersion;
     header.tile = std::uint32_t(tile);
     header.key = key;
-    header.width = map.width;
-    header.height = map.height;
+    header.width = width;
+    header.height = height;
     header.levels = std::int32_t(levels.size());
     header.size_x = mapping.sizeX();
     header.size_z = mapping.sizeZ();
@@ -202,55 +239,92 @@ std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, 
     std::uint64_t offset = sizeof header;
     out.write(&header, sizeof header);
 
-    std::vector<std::vector<TileCache::Entry>> index;  // per level
-    Heightmap fine, level = map;
-    std::vector<float> child_errors;  // the level before's tile errors (m)
+    // The map streams through: each level keeps the band of rows its next tile row needs (and
+    // the next level's errors), and writes a tile row as soon as its rows are in, so the levels'
+    // tiles interleave in the file (the index has their offsets). The grid errors in the index
+    // get their finer tiles' errors added at the end.
+    const std::size_t nlevels = levels.size();
+    std::vector<std::vector<TileCache::Entry>> index(nlevels);
+    std::vector<Band> bands(nlevels);
+    for (std::size_t l = 0; l < nlevels; ++l) {
+        index[l].resize(std::size_t(levels[l].tiles_x) * std::size_t(levels[l].tiles_z));
+        bands[l].width = levels[l].width;
+        bands[l].height = levels[l].height;
+    }
     int done = 0;
-    for (std::size_t l = 0; l < levels.size() && out.ok(); ++l) {
+    auto writeTileRow = [&](std::size_t l) {
+        Band& band = bands[l];
         const TileCacheLevel& info = levels[l];
-        std::vector<float> errors(std::size_t(info.tiles_x) * std::size_t(info.tiles_z), 0.0f);
-        if (l > 0) {
-            // A tile's error: what its level misses of the finer one, plus the most its finer tiles miss.
-            errors = levelErrors(fine, level, info, tile);
-            const TileCacheLevel& below = levels[l - 1];
-            for (int tz = 0; tz < info.tiles_z; ++tz)
-                for (int tx = 0; tx < info.tiles_x; ++tx) {
-                    float& e = errors[std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)];
-                    e = float(double(e) * std::abs(mapping.height_scale_m));
-                    float most = 0.0f;
-                    for (int cz = 2 * tz; cz <= std::min(2 * tz + 1, below.tiles_z - 1); ++cz)
-                        for (int cx = 2 * tx; cx <= std::min(2 * tx + 1, below.tiles_x - 1); ++cx)
-                            most = std::max(most, child_errors[std::size_t(cz) * std::size_t(below.tiles_x) + std::size_t(cx)]);
-                    e += most;
-                }
-        }
+        const int tz = band.next_tile_row;
         const double step = double(std::int64_t(1) << l);
-        const std::vector<std::int8_t> normals =
-            levelNormals(level, mapping.texelSizeX() * step, mapping.texelSizeZ() * step, mapping.height_scale_m);
-        std::vector<TileCache::Entry>& entries = index.emplace_back();
+        const double tx_m = mapping.texelSizeX() * step, tz_m = mapping.texelSizeZ() * step;
+        auto normal = [&](int x, int z, std::int8_t* n) { normalAt(band, x, z, tx_m, tz_m, mapping.height_scale_m, n); };
+        for (int tx = 0; tx < info.tiles_x && out.ok(); ++tx) {
+            CacheTile t = cut(band, normal, tile, tx, tz, mapping);
+            TileCache::Entry& e = index[l][std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)];
+            e.offset = offset;
+            e.width = std::uint32_t(t.width);
+            e.height = std::uint32_t(t.height);
+            e.min_m = t.min_m;
+            e.max_m = t.max_m;
+            // What this level misses of the finer one (the finer tiles' errors are added at the end).
+            e.error_m = l == 0 ? 0.0f : float(double(tileError(bands[l - 1], band, tile, tx, tz)) * std::abs(mapping.height_scale_m));
+            const std::size_t hb = t.heights.size() * sizeof(float), nb = t.normals.size();
+            e.hash = fnv1a(t.normals.data(), nb, fnv1a(t.heights.data(), hb));
+            out.write(t.heights.data(), hb);
+            out.write(t.normals.data(), nb);
+            offset += hb + nb;
+            if (progress) progress(++done, total);
+        }
+        ++band.next_tile_row;
+    };
+    // Rows a level keeps: its next tile row's (and the row above, for normals), and the rows
+    // under the next level's next tile row (its errors).
+    auto trim = [&](std::size_t l) {
+        int keep = bands[l].next_tile_row * tile - 1;
+        if (l + 1 < nlevels) keep = std::min(keep, parentPosition(bands[l + 1].next_tile_row * tile, bands[l].height));
+        bands[l].dropBefore(keep);
+    };
+    std::vector<float> row(static_cast<std::size_t>(width));
+    std::vector<std::vector<float>> pending(nlevels);
+    for (int z = 0; z < height && out.ok(); ++z) {
+        if (std::string why = rows(z, row.data()); !why.empty()) return why;
+        // The row enters level 0, and every coarser level that keeps it, finest first.
+        pending[0] = row;
+        std::size_t top = 0;
+        for (std::size_t l = 0; l + 1 < nlevels; ++l) {
+            const Band& fine = bands[l];
+            if (bands[l + 1].end() >= bands[l + 1].height || parentPosition(bands[l + 1].end(), fine.height) != fine.end())
+                break;  // not a row the next level keeps
+            std::vector<float>& coarse = pending[l + 1];
+            coarse.resize(std::size_t(bands[l + 1].width));
+            for (int x = 0; x < bands[l + 1].width; ++x) coarse[std::size_t(x)] = pending[l][std::size_t(parentPosition(x, fine.width))];
+            top = l + 1;
+        }
+        for (std::size_t l = 0; l <= top; ++l) {
+            bands[l].rows.push_back(pending[l]);
+            // A tile row needs its rows and the one below (normals); the last two may be ready at once.
+            while (bands[l].next_tile_row < levels[l].tiles_z &&
+                   bands[l].end() > std::min(bands[l].next_tile_row * tile + tile + 1, bands[l].height - 1))
+                writeTileRow(l);
+        }
+        for (std::size_t l = 0; l < nlevels; ++l) trim(l);
+    }
+
+    for (std::size_t l = 0; l < nlevels && out.ok(); ++l)
+        if (bands[l].next_tile_row != levels[l].tiles_z)
+            return file.string() + ": level " + std::to_string(l) + " did not get all its rows (a bug)";
+    for (std::size_t l = 1; l < nlevels; ++l) {
+        // A tile's error: what its level misses of the finer one, plus the most its finer tiles miss.
+        const TileCacheLevel &info = levels[l], &below = levels[l - 1];
         for (int tz = 0; tz < info.tiles_z; ++tz)
             for (int tx = 0; tx < info.tiles_x; ++tx) {
-                CacheTile t = cutTile(level, normals, tile, tx, tz, mapping);
-                TileCache::Entry e;
-                e.offset = offset;
-                e.width = std::uint32_t(t.width);
-                e.height = std::uint32_t(t.height);
-                e.min_m = t.min_m;
-                e.max_m = t.max_m;
-                e.error_m = errors[std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)];
-                const std::size_t hb = t.heights.size() * sizeof(float), nb = t.normals.size();
-                e.hash = fnv1a(t.normals.data(), nb, fnv1a(t.heights.data(), hb));
-                out.write(t.heights.data(), hb);
-                out.write(t.normals.data(), nb);
-                offset += hb + nb;
-                entries.push_back(e);
-                if (progress) progress(++done, total);
+                float most = 0.0f;
+                for (int cz = 2 * tz; cz <= std::min(2 * tz + 1, below.tiles_z - 1); ++cz)
+                    for (int cx = 2 * tx; cx <= std::min(2 * tx + 1, below.tiles_x - 1); ++cx)
+                        most = std::max(most, index[l - 1][std::size_t(cz) * std::size_t(below.tiles_x) + std::size_t(cx)].error_m);
+                index[l][std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)].error_m += most;
             }
-        child_errors = std::move(errors);
-        if (l + 1 < levels.size()) {
-            fine = std::move(level);
-            level = halveLevel(fine);
-        }
     }
     std::uint64_t hash = fnv1a(&header, sizeof header);
     for (const auto& entries : index) {

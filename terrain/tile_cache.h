@@ -61,6 +61,14 @@ CacheTile cutTile(const Heightmap& level, const std::vector<std::int8_t>& normal
 std::string buildTileCache(const Heightmap& map, const TerrainMapping& mapping, const TileCacheKey& key, int tile,
                            const std::filesystem::path& file, bool force,
                            const std::function<void(int, int)>& progress = {});
+// Level-0 row z of a map into row (width samples); asked for z = 0, 1, ... once each, in order.
+// "" on success, else why (which stops the build and is returned).
+using TileCacheRows = std::function<std::string(int z, float* row)>;
+// The same from a map read a row at a time: the map is never held (each level keeps about
+// 2 * tile + 3 of its rows), so a map larger than memory can be cached. The same file as above.
+std::string buildTileCache(int width, int height, const TileCacheRows& rows, const TerrainMapping& mapping,
+                           const TileCacheKey& key, int tile, const std::filesystem::path& file, bool force,
+                           const std::function<void(int, int)>& progress = {});
 
 class TileCache {
 public:

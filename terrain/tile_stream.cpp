@@ -7,6 +7,11 @@
 #include <limits>
 
 namespace vista {
+
+double missingTileErrorPx(double error_m, double error_scale, double distance_m, double near_m) {
+    const double d = std::max({distance_m, near_m, 1e-3});
+    return error_m * error_scale / d;
+}
 namespace {
 
 std::atomic<int> g_read_delay_ms{0};

@@ -47,6 +47,12 @@ struct StreamCounters {
     std::int64_t pool_pages = 0;
 };
 
+// The screen error (px) a node drawn from a coarser tile adds: that tile's grid error (m) over
+// the distance to the node's nearest point, error_scale px per (m / m). The distance is at least
+// near_m (nothing nearer than the near plane is drawn), so the node the camera stands in gives a
+// finite bound rather than a division by ~0.
+double missingTileErrorPx(double error_m, double error_scale, double distance_m, double near_m);
+
 // The page table's header (ints before the table, terrain/shaders/tiles.glsl): levels, tile,
 // map width, height; then per level (at 4 + 8 l) first entry, tiles x, z, level width, height.
 inline constexpr int kStreamHeaderInts = 4 + 8 * 32;

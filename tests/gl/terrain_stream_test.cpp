@@ -140,6 +140,29 @@ TEST_CASE("gl: a streamed terrain on a slow disk never shows a hole along a fast
     TileStream::setReadDelayForTests(0);
 }
 
+TEST_CASE("gl: the first frame's missing-tile error stays a finite bound with the camera among the nodes") {
+    TileStream::setReadDelayForTests(0);
+    // A fresh pool (another size reopens the stream): the first frame draws the coarsest levels only.
+    render(islandScene(true, 1500), overview());
+    const double ground = renderer().terrain()->heightAt(0.0, 0.0);
+    const Settings s = islandScene(true, 1499);
+    // 3 m above the ground at the island's middle, looking along it: the camera stands inside the
+    // boxes of the nodes around it, whose nearest point is ~0 m away.
+    const ViewParams low{{0.0, ground + 3.0, 0.0}, 40.0, -5.0, 60.0, 0.5, 160, 90};
+    const Frame f = render(s, low);
+    const TileCache& cache = renderer().terrain()->stream()->cache();
+    const double top_error = cache.entry(int(cache.levels().size()) - 1, 0, 0).error_m;  // bounds every tile's
+    const double px = f.counters.at("terrain.stream.missing_error_px");
+    INFO("missing " << f.counters.at("terrain.stream.missing") << ", " << px << " px, top error " << top_error << " m");
+    CHECK(f.counters.at("terrain.stream.missing") > 0);
+    CHECK(px > 0.0);
+    // No point nearer than the near plane (0.5 m) is drawn: at most the error seen from there,
+    // at 90 px over a 60 degree field of view.
+    CHECK(px <= top_error * (90.0 / (2.0 * std::tan(glm::radians(30.0)))) / 0.5 * 1.001);
+    CHECK(missingTileErrorPx(2.0, 100.0, 0.0, 0.5) == 400.0);
+    CHECK(missingTileErrorPx(2.0, 100.0, 4.0, 0.5) == 50.0);
+}
+
 TEST_CASE("gl: a streamed terrain with a tiny pool evicts and stays consistent") {
     TileStream::setReadDelayForTests(0);
     const Settings s = islandScene(true, 96);  // the three coarsest levels (21 tiles) and 75 more

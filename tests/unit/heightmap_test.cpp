@@ -267,9 +267,57 @@ TEST_CASE("heightmap: gen-heightmap writes PNG and EXR that load back, and rejec
     for (std::size_t i = 0; i < png.samples.size(); ++i) CHECK(std::abs(png.samples[i] - expected.samples[i]) <= 1.0f / 65535.0f);
 
     CHECK(runGenHeightmap(1, 3, dir / "a.png") == 2);
-    CHECK(runGenHeightmap(16386, 3, dir / "a.png") == 2);
+    CHECK(runGenHeightmap(16386, 3, dir / "a.png") == 2);  // .png/.exr are encoded in memory
+    CHECK(runGenHeightmap(65538, 3, dir / "a.tif") == 2);
+    CHECK_FALSE(fs::exists(dir / "a.tif"));
     CHECK(runGenHeightmap(65, 3, dir / "a.jpg") == 2);
     CHECK(runGenHeightmap(65, 3, dir / "no-such-dir" / "a.png") == 2);
+}
+
+// Maps larger than memory: the island row by row through a scratch file, the same bits as in
+// memory (erosion pipelined over a window of rows, both remaps from streamed ranges).
+TEST_CASE("heightmap: generateIslandRows gives generateIsland's bits, row by row in order") {
+    TempDir dir("rows");
+    for (int size : {2, 3, 4, 17, 66, 129})
+        for (int passes : {0, 1, 4}) {
+            CAPTURE(size);
+            CAPTURE(passes);
+            IslandParams p{size, 5};
+            p.erosion_passes = passes;
+            const Heightmap expected = generateIsland(p);
+            std::vector<float> got;
+            int next = 0;
+            double last_progress = 0.0;
+            const std::string why = generateIslandRows(
+                p, dir / "scratch",
+                [&](int z, const float* row) {
+                    REQUIRE(z == next++);
+                    got.insert(got.end(), row, row + size);
+                    return std::string();
+                },
+                [&](double done) { last_progress = done; });
+            REQUIRE(why == "");
+            CHECK(last_progress == 1.0);
+            CHECK_FALSE(fs::exists(dir / "scratch"));  // unlinked as soon as it was made
+            CHECK(got == expected.samples);  // bit for bit
+        }
+    // The row callback's error stops the run and comes back.
+    CHECK(generateIslandRows(IslandParams{33, 1}, dir / "scratch", [](int z, const float*) {
+              return z == 5 ? std::string("full disk") : std::string();
+          }) == "full disk");
+    CHECK(generateIslandRows(IslandParams{33, 1}, dir / "no-such-dir" / "scratch", [](int, const float*) {
+              return std::string();
+          }).find("scratch") != std::string::npos);
+}
+
+TEST_CASE("heightmap: gen-heightmap writes a float TIFF row by row with the in-memory generator's bits") {
+    TempDir dir("gentif");
+    REQUIRE(runGenHeightmap(129, 3, dir / "island.tif") == 0);
+    CHECK(loadOk(dir / "island.tif").samples == generateIsland(IslandParams{129, 3}).samples);
+    CHECK_FALSE(fs::exists(dir / ".island.tif.partial"));
+    CHECK(runGenHeightmap(129, 3, dir / "island.tif") == 2);  // exists: needs --force
+    CHECK(runGenHeightmap(65, 3, dir / "island.tif", true) == 0);
+    CHECK(loadOk(dir / "island.tif").width == 65);
 }
 
 namespace {

@@ -2,13 +2,16 @@
 // memory, tile errors bound what each level misses of the full map, and a truncated, damaged
 // or stale cache is found.
 #include "../temp_dir.h"
+#include "terrain/heightmap_rows.h"
 #include "terrain/tile_cache.h"
 
+#include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 
 using namespace vista;
 namespace fs = std::filesystem;
@@ -34,6 +37,11 @@ std::string build(const Heightmap& map, const fs::path& file, int tile, bool for
     return buildTileCache(map, mappingOf(map), key, tile, file, force);
 }
 
+std::vector<char> fileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 }  // namespace
 
 TEST_CASE("tile cache: the pyramid's levels halve down to one tile") {
@@ -54,7 +62,8 @@ TEST_CASE("tile cache: the pyramid's levels halve down to one tile") {
 
 TEST_CASE("tile cache: a round trip equals the pyramid in memory, reading one tile at a time") {
     TempDir dir("roundtrip");
-    for (int size : {129, 150}) {
+    // 130: the last two tile rows are ready with the same (last) map row.
+    for (int size : {129, 130, 150}) {
         CAPTURE(size);
         const Heightmap map = island(size);
         const TerrainMapping mapping = mappingOf(map);
@@ -109,6 +118,46 @@ TEST_CASE("tile cache: a round trip equals the pyramid in memory, reading one ti
         CHECK_FALSE(cache->read(0, 99, 0, top, why));
         CHECK(why.find("does not exist") != std::string::npos);
     }
+}
+
+TEST_CASE("tile cache: built from an image read a band of rows at a time, the same file as from the map in memory") {
+    TempDir dir("rows");
+    const Heightmap map = island(150);
+    for (const std::string name : {"map.png", "map.tif"}) {
+        CAPTURE(name);
+        const fs::path image = dir / name;
+        REQUIRE(saveHeightmapPng16(dir / "map.png", map).empty());
+        if (name == "map.tif") {
+            InputErrors errors;
+            Heightmap png = loadHeightmap(dir / "map.png", 0, 0, errors);
+            REQUIRE(saveHeightmapExr(dir / "map.exr", png).empty());  // float samples, as a TIFF keeps them
+        }
+        InputErrors errors;
+        const Heightmap loaded = loadHeightmap(name == "map.png" ? image : dir / "map.exr", 0, 0, errors);
+        REQUIRE(errors.empty());
+        if (name == "map.tif") {
+            // A float TIFF through OpenImageIO.
+            auto out = OIIO::ImageOutput::create("tiff");
+            REQUIRE(out);
+            REQUIRE(out->open(image.string(), OIIO::ImageSpec(loaded.width, loaded.height, 1, OIIO::TypeDesc::FLOAT)));
+            REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, loaded.samples.data()));
+            REQUIRE(out->close());
+        }
+        std::string why;
+        auto rows = HeightmapRows::open(image, why);
+        REQUIRE_MESSAGE(rows, why);
+        CHECK(rows->width() == 150);
+        REQUIRE(build(loaded, dir / "memory.vtc", 32, true) == "");
+        const TerrainMapping mapping = mappingOf(loaded);
+        REQUIRE(buildTileCache(rows->width(), rows->height(), [&](int z, float* row) { return rows->read(z, row); }, mapping,
+                               TileCacheKey{123, 456, 789}, 32, dir / "rows.vtc", true) == "");
+        CHECK(fileBytes(dir / "memory.vtc") == fileBytes(dir / "rows.vtc"));
+    }
+    // What the rows cannot read is left to loadHeightmap: EXR (headers checked in memory), RGB.
+    std::string why;
+    CHECK_FALSE(HeightmapRows::open(dir / "map.exr", why));
+    CHECK_FALSE(HeightmapRows::open(dir / "none.png", why));
+    CHECK(why.find("none.png") != std::string::npos);
 }
 
 TEST_CASE("tile cache: a truncated, damaged or foreign cache is found, and an existing one kept without force") {
