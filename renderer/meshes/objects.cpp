@@ -2,11 +2,11 @@
 #include "renderer/meshes/objects.h"
 
 #include "renderer/bindings.h"
+#include "renderer/frustum.h"
 #include "renderer/gl_device.h"
 #include "renderer/meshes/gltf_loader.h"
 #include "renderer/meshes/impostor.h"
 #include "renderer/meshes/mesh_lod.h"
-#include "terrain/cdlod.h"
 
 #include <glm/trigonometric.hpp>
 
