@@ -329,7 +329,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
         if (key != shadow_caster_key_) sun_shadows.forgetKept();
         shadow_caster_key_ = std::move(key);
     }
-    sun_shadows.prepare(s.shadows, s.sky, sun, rc.view, fit_view ? *fit_view : rc.view, sequence_index_);
+    sun_shadows.prepare(s.shadows, s.sky.sun_angular_radius_deg, sun, rc.view, fit_view ? *fit_view : rc.view, sequence_index_);
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
@@ -653,7 +653,7 @@ void FrameRenderer::addLightingPasses(FrameGraph& graph, const Frame& f, const S
         }
     }
     // The debug grid on the lit ground, under the aerial perspective like the ground.
-    if (s.debug.grid && !f.shadow_view) addGridPass(graph, f.rc, s.debug, s.sky, scene);
+    if (s.debug.grid && !f.shadow_view) addGridPass(graph, f.rc, s.debug, s.sky.enabled, scene);
 }
 
 ForwardLight FrameRenderer::forwardLight(const Frame& f, const Shadows& shadows) {

@@ -4,7 +4,7 @@
 // "postfx.bloom.composite" mixes the result into the image (same size and format).
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/bloom_settings.h"
 #include "renderer/render_context.h"
 
 #include <string>

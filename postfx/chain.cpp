@@ -21,7 +21,7 @@ void PostChain::resetHistory() {
     last_time_s_ = 0.0;
 }
 
-TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+TextureHandle PostChain::addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const PostChainSettings& s,
                                    TextureHandle depth, bool shown, TextureHandle velocity) {
     const double dt = has_time_ ? rc.time_s - last_time_s_ : 0.0;
     const bool reset = !has_time_ || dt < 0.0;
@@ -121,7 +121,7 @@ std::size_t PostChain::memoryBytes() const {
     return auto_exposure_.memoryBytes() + dof_.memoryBytes() + lens_flare_.memoryBytes() + lut_texture_.bytes();
 }
 
-InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& lut_file) {
+InputErrors PostChain::prepare(const PostChainSettings& s, const std::filesystem::path& lut_file) {
     InputErrors errors;
     const std::string wanted = s.grade.enabled && !s.grade.lut.empty() ? lut_file.string() : std::string();
     if (wanted == lut_path_) return errors;
@@ -136,7 +136,7 @@ InputErrors PostChain::prepare(const Settings& s, const std::filesystem::path& l
     return errors;
 }
 
-double cameraEv100(const Settings& s) {
+double cameraEv100(const PostChainSettings& s) {
     const double shutter_s = double(s.motion_blur.shutter_deg) / 360.0 / double(s.motion_blur.frame_rate);
     return ev100(double(s.dof.f_stop), shutter_s, double(s.exposure.iso));
 }

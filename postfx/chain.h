@@ -6,12 +6,12 @@
 #pragma once
 
 #include "config/input_error.h"
-#include "config/settings.h"
 #include "postfx/dof.h"
 #include "postfx/exposure.h"
 #include "postfx/grade.h"
 #include "postfx/lens_flare.h"
 #include "postfx/motion_blur.h"
+#include "postfx/postfx_settings.h"
 #include "renderer/feature_slot.h"
 #include "renderer/render_context.h"
 
@@ -34,7 +34,7 @@ public:
     // stays put so the adapting states (exposure, focus) catch up on the next shown frame.
     // velocity: the frame's motion vectors ("temporal.velocity") for motion blur; invalid: motion
     // blur makes its own from its previous camera.
-    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const Settings& s,
+    TextureHandle addPasses(FrameGraph& graph, const RenderContext& rc, TextureHandle hdr, const PostChainSettings& s,
                             TextureHandle depth = {}, bool shown = true, TextureHandle velocity = {});
     // Auto exposure's state, while auto exposure is in use (null otherwise).
     const AutoExposure* autoExposure() const { return auto_exposure_.get(); }
@@ -44,7 +44,7 @@ public:
     const LensFlare* lensFlare() const { return lens_flare_.get(); }
     // Loads the files the settings name ([postfx.grade] lut, found at lut_file) when they
     // changed; the problems (file:line) are returned and the LUT is then left out.
-    InputErrors prepare(const Settings& s, const std::filesystem::path& lut_file);
+    InputErrors prepare(const PostChainSettings& s, const std::filesystem::path& lut_file);
     // Forgets every state kept across frames (adapted exposure, autofocus, motion blur's previous
     // camera, the flare's smoothed visibility, the clock): the next frame starts as the first.
     void resetHistory();
@@ -70,6 +70,6 @@ ProgramList postfxPrograms();
 
 // The camera's EV100 for [postfx.exposure] mode = camera: the lens's [postfx.dof] f_stop, the
 // shutter time [postfx.motion_blur] shutter_deg / 360 / frame_rate and [postfx.exposure] iso.
-double cameraEv100(const Settings& s);
+double cameraEv100(const PostChainSettings& s);
 
 }  // namespace vista

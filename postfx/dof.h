@@ -13,7 +13,7 @@
 // of view comes from [camera] fov_deg, so focal length and sensor only set the blur.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/dof_settings.h"
 #include "postfx/postfx_bindings.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"

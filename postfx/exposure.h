@@ -4,7 +4,7 @@
 // pass of the chain: the tone map, or "postfx.exposure.apply" when another effect comes first.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/exposure_settings.h"
 #include "postfx/postfx_bindings.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"

@@ -1,7 +1,7 @@
 // "postfx.fxaa": FXAA 3.11 on the chain's image (postfx/shaders/fxaa.glsl); same size and format.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/fxaa_settings.h"
 #include "renderer/render_context.h"
 
 #include <string>

@@ -2,7 +2,8 @@
 // format. Night vision, a look of its own, lives here too.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/grade_settings.h"
+#include "postfx/night_vision_settings.h"
 #include "renderer/render_context.h"
 
 #include <string>

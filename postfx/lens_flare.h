@@ -6,7 +6,7 @@
 // camera or below the horizon.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/lens_flare_settings.h"
 #include "postfx/postfx_bindings.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"

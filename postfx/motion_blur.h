@@ -13,7 +13,7 @@
 // is still, on the first frame, or when time did not advance.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/motion_blur_settings.h"
 #include "renderer/render_context.h"
 
 #include <glm/mat4x4.hpp>

@@ -7,7 +7,7 @@
 // frames have no such pass.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/scotopic_settings.h"
 #include "renderer/render_context.h"
 
 #include <string>

@@ -3,7 +3,7 @@
 // Runs before "lighting.sun", which multiplies its ambient term by the result.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/ssao_settings.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 

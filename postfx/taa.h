@@ -6,7 +6,7 @@
 // and a camera cut (renderer/temporal.h) rejects it for one frame.
 #pragma once
 
-#include "config/settings.h"
+#include "postfx/taa_settings.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 

@@ -4,8 +4,8 @@
 // chain without an enabled tone map (or with [postfx] disabled).
 #pragma once
 
-#include "config/settings.h"
 #include "postfx/exposure.h"
+#include "postfx/tonemap_settings.h"
 #include "renderer/render_context.h"
 
 namespace vista {

@@ -10,7 +10,7 @@ namespace {
 #include "renderer/shaders/grid_block.glsl"
 }  // namespace
 
-void addGridPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings& debug, const SkySettings& sky,
+void addGridPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings& debug, bool sky_enabled,
                  SceneTargets& targets) {
     struct Data {
         SceneTargets t;
@@ -22,7 +22,7 @@ void addGridPass(FrameGraph& graph, const RenderContext& rc, const DebugSettings
     block.u_origin = {float(std::fmod(rc.view.position.x, period)), float(std::fmod(rc.view.position.z, period))};
     block.u_height = float(rc.view.position.y);
     block.u_spacing = debug.grid_spacing;
-    block.u_sky.x = sky.enabled ? 1.0f : 0.0f;
+    block.u_sky.x = sky_enabled ? 1.0f : 0.0f;
     const Data& d = graph.addPass<Data>("debug.grid",
         [&](PassBuilder& b, Data& data) {
             data.t.hdr = b.write(targets.hdr);

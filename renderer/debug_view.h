@@ -3,7 +3,7 @@
 // pixel (renderer/shaders/debug_view.glsl says how each is drawn).
 #pragma once
 
-#include "config/settings.h"
+#include "renderer/debug_settings.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 

@@ -6,12 +6,12 @@
 // directions and the celestial frame from the settings.
 #pragma once
 
-#include "config/settings.h"
 #include "renderer/aerial_volume.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "sky/atmosphere_model.h"
+#include "sky/sky_settings.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>

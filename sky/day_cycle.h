@@ -4,7 +4,7 @@
 // renders frame k as a sequential run does).
 #pragma once
 
-#include "config/settings.h"
+#include "sky/sky_settings.h"
 
 namespace vista {
 

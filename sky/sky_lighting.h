@@ -13,8 +13,8 @@
 // direct sun and the moon's sunlight, skyColourMatrix() for the skylight).
 #pragma once
 
-#include "config/settings.h"
 #include "sky/atmosphere_reference.h"
+#include "sky/sky_settings.h"
 
 #include <glm/vec3.hpp>
 

@@ -3,9 +3,9 @@
 // PSNR the GL test and `vista bench sky` compare the GPU with. No GL.
 #pragma once
 
-#include "config/settings.h"
 #include "renderer/camera.h"
 #include "sky/atmosphere_reference.h"
+#include "sky/sky_settings.h"
 
 #include <cstdint>
 #include <vector>

@@ -8,6 +8,7 @@
 // camera-relative outputs, so a terrain far from the origin is stable.
 #pragma once
 
+#include "renderer/frustum.h"  // Frustum, frustumFromViewProj
 #include "terrain/heightmap.h"
 
 #include <glm/mat4x4.hpp>
@@ -69,13 +70,6 @@ private:
     std::vector<std::vector<glm::vec2>> levels_;  // per level, row-major (z * nodes.x + x)
 };
 
-// A frustum as 6 inward-facing planes (a, b, c, d) in camera-relative world space:
-// a point p is inside when dot(abc, p) + d >= 0 for every plane. Order: left, right,
-// bottom, top, near, far; planes are normalised (|abc| = 1) or (0, 0, 0, 1) (always passes).
-using Frustum = std::array<glm::dvec4, 6>;
-// Planes of a view-projection matrix (camera-relative, reversed-Z infinite: the far plane is
-// degenerate and always passes).
-Frustum frustumFromViewProj(const glm::dmat4& view_proj);
 
 // Ranges and morph regions. A level-k node's box has x/z extents (e_x, e_z) = texel sizes *
 // min(leaf_texels << k, map samples - 1) and height H_k = tree.heightSpan(k); its diagonal is

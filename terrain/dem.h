@@ -5,9 +5,9 @@
 #pragma once
 
 #include "config/input_error.h"
-#include "config/settings.h"
 #include "terrain/cdlod.h"
 #include "terrain/heightmap.h"
+#include "terrain/terrain_settings.h"
 
 #include <cstdint>
 #include <filesystem>

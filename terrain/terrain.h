@@ -4,13 +4,13 @@
 #pragma once
 
 #include "config/input_error.h"
-#include "config/settings.h"
 #include "renderer/camera.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
+#include "terrain/terrain_settings.h"
 #include "terrain/tess_displacement.h"
 #include "terrain/tile_stream.h"
 #include "terrain/user_materials.h"

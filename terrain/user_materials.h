@@ -6,8 +6,8 @@
 #pragma once
 
 #include "config/input_error.h"
-#include "config/settings.h"
 #include "terrain/materials.h"
+#include "terrain/terrain_settings.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -4,7 +4,10 @@
 Each folder is a layer that may include only the layers listed for it in ALLOWED (and itself).
 config/ is split in two: its machinery (the visitor, file IO, input errors) sits at the bottom;
 the scene (config/settings.h, ini, presets: the one Settings aggregate of every feature's
-settings struct) sits just under app/, since it names every feature.
+settings struct) sits just under app/, since it names every feature. The build mirrors the table
+(CMakeLists.txt): one static library per layer, linked to the layers it may use, whose headers
+reach the compiler only through build/layers/; tests/layers/plant_back_edge.py checks that this
+script fails on a planted back edge.
 
 An include against these rules is a back edge. The ones that exist today are listed in KNOWN,
 each with what removes it (issue 26 #5); a new one fails, and so does a KNOWN entry that is
@@ -22,6 +25,7 @@ LAYERS = [
     ("config", ("config/",)),
     ("renderer/lighting", ("renderer/lighting/",)),
     ("renderer/shadows", ("renderer/shadows/",)),
+    ("renderer/meshes", ("renderer/meshes/",)),
     ("renderer", ("renderer/",)),
     ("terrain/grass", ("terrain/grass/",)),
     ("terrain/water", ("terrain/water/",)),
@@ -46,58 +50,20 @@ ALLOWED = {
     "sky/weather": ["sky/clouds", "sky", "terrain", "renderer/lighting"] + CORE,
     "terrain/water": ["sky/weather", "sky", "terrain", "renderer/lighting", "renderer/shadows"] + CORE,
     "postfx": CORE,
-    "config/scene": ["config", "renderer/lighting"],  # [lights] is described beside the light types
+    "renderer/meshes": CORE,
     "app": [name for name, _ in LAYERS],
 }
+# The scene's Settings gathers every feature's settings struct (each beside its feature).
+ALLOWED["config/scene"] = [name for name, _ in LAYERS if name not in ("config/scene", "app")]
 
-# Back edges that exist today: (including file, included file) -> what removes it.
-SETTINGS_STRUCTS = "each feature owns its settings struct (config/ keeps the machinery)"
+# Back edges that exist today: (including file, included file) -> what removes it (issue 26 #5).
+# The build links them too (CMakeLists.txt, "Back edge (KNOWN)").
 KNOWN = {
-    # Wave 2 features merged before their settings moved to their own folders (issue 26 #5).
-    ("config/settings.h", "terrain/scatter/object_settings.h"): SETTINGS_STRUCTS,
-    ("postfx/taa.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/scotopic.h", "config/settings.h"): SETTINGS_STRUCTS,  # issue 23, merged after the layering check
-    ("sky/day_cycle.h", "config/settings.h"): SETTINGS_STRUCTS,    # issue 23, merged after the layering check
-    ("terrain/dem.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("renderer/meshes/objects.cpp", "terrain/cdlod.h"): "objects placed by terrain/scatter; drawn meshes take a height callback",
     ("renderer/meshes/objects.h", "terrain/scatter/object_settings.h"): "object drawing split from placement: placement under terrain/scatter",
     ("renderer/meshes/objects.h", "terrain/scatter/scatter.h"): "object drawing split from placement: placement under terrain/scatter",
-    ("renderer/debug_grid.h", "config/settings.h"): "DebugView and the grid settings into renderer/",
-    ("renderer/debug_view.h", "config/settings.h"): "DebugView and the grid settings into renderer/",
-    ("renderer/lighting/deferred.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("renderer/lighting/local_lights.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("renderer/shadows/spot_shadows.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("renderer/shadows/sun_shadows.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("renderer/shadows/spot_shadows.h", "renderer/lighting/lights.h"): "the light types into renderer/ (shadows pick spots)",
-    ("renderer/shadows/spot_shadows.h", "terrain/cdlod.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/spot_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/point_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
     ("renderer/shadows/sun_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
-    ("renderer/shadows/sun_shadows.h", "terrain/cdlod.h"): "the terrain as a ShadowCaster like grass",
-    ("sky/atmosphere.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/sky_lighting.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/sky_reference_image.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/clouds/cloud_model.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/clouds/clouds.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/clouds/sun_visibility.h", "config/settings.h"): SETTINGS_STRUCTS,  # issue 23 #6, merged after the layering check
-    ("sky/weather/weather.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("sky/weather/weather_model.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/grass/grass.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/grass/grass_placement.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/water/water.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/water/waves.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/terrain.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("terrain/user_materials.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/bloom.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/chain.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/dof.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/exposure.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/fxaa.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/grade.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/lens_flare.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/motion_blur.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/ssao.h", "config/settings.h"): SETTINGS_STRUCTS,
-    ("postfx/tonemap.h", "config/settings.h"): SETTINGS_STRUCTS,
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')

@@ -18,7 +18,7 @@
 //
 // Lighting: a light whose irradiance at normal incidence is E adds L = f * E * max(n.l, 0) of
 // radiance toward the eye. The sun's E is [sky] sun_illuminance times its transmittance; a point
-// or spot light's E is colour * intensity * falloff * spot (renderer/lighting/lights.h). Ambient light
+// or spot light's E is colour * intensity * falloff * spot (renderer/lights.h). Ambient light
 // (renderer/lighting/shaders/sun.glsl) is a hemisphere: irradiance E(n) = mix(E_ground, E_sky, 0.5 + 0.5 n.y)
 // from the sky irradiance on an up-facing surface and the ground's bounce; it adds
 // (1 - F_r) albedo / pi * E(n) + F_r / pi * E(r), r the mirror direction and

@@ -15,7 +15,7 @@
 // >= 0 has a slice.
 #pragma once
 
-#include "renderer/lighting/lights.h"
+#include "renderer/lights.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>

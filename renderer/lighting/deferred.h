@@ -2,12 +2,13 @@
 // added to the HDR target. Local lights come after it (renderer/lighting/local_lights.h).
 #pragma once
 
-#include "config/settings.h"
+#include "renderer/debug_settings.h"
 #include "renderer/lighting/sun_variant.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "renderer/shadows/sun_shadows.h"
 #include "sky/sky_lighting.h"
+#include "sky/sky_settings.h"
 
 #include <glm/vec3.hpp>
 

@@ -5,6 +5,7 @@
 #include "renderer/lighting/local_lights.h"
 #include "sky/atmosphere.h"
 #include "sky/atmosphere_model.h"
+#include "sky/sky_settings.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

@@ -34,7 +34,7 @@
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
 #include "renderer/lighting/light_settings.h"
-#include "renderer/lighting/lights.h"
+#include "renderer/lights.h"
 #include "renderer/program_key.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"

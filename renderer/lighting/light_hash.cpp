@@ -12,7 +12,7 @@
 // changed, so only those cells are re-examined against the tables.
 #include "renderer/lighting/light_hash.h"
 
-#include "renderer/lighting/random.h"
+#include "renderer/random.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

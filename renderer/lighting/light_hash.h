@@ -51,8 +51,8 @@
 // build again).
 #pragma once
 
-#include "renderer/lighting/lights.h"
 #include "renderer/lighting/perfect_hash.h"
+#include "renderer/lights.h"
 
 #include <glm/vec3.hpp>
 
@@ -108,7 +108,7 @@ public:
     LightHash(LightHash&&) noexcept;
     LightHash& operator=(LightHash&&) noexcept;
 
-    // Builds from scratch: light i is spheres[i] (world bounding spheres, renderer/lighting/lights.h).
+    // Builds from scratch: light i is spheres[i] (world bounding spheres, renderer/lights.h).
     const LightHashStats& build(std::span<const Sphere> spheres, const LightHashSettings& settings);
     // Brings the structure to spheres (same ids; ids past spheres.size() are removed, new ones
     // added), changing only what moved (see the header comment).

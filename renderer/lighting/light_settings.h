@@ -5,7 +5,7 @@
 // List keys (the ini format for explicit lights and generation volumes). Each entry is one key
 // `light.NAME` or `volume.NAME`, NAME made of letters, digits and '_' and unique in the
 // section; entries keep file order. The value is a type word and a position, then keyword groups
-// in any order; omitted groups keep the defaults of Light / LightVolume (renderer/lighting/lights.h):
+// in any order; omitted groups keep the defaults of Light / LightVolume (renderer/lights.h):
 //
 //   light.lantern = point 10 42 -5  color 1 0.7 0.4  candela 100            (radius auto)
 //   light.beam    = spot 0 50 0  radius 40  color 1 1 1  lumens 2000  direction 0 -1 0  cone 20 30
@@ -35,11 +35,11 @@
 // over parseLightSpec / formatLightSpec and parseVolumeSpec / formatVolumeSpec, so the ini loader,
 // --set lights.light.NAME=..., the writer, `vista check` and the panel all handle them. A scene
 // without light.* / volume.* keys has empty lists. This file and light_settings.cpp use only
-// headers from config/ and renderer/lighting/lights.h (no lights.cpp): they are part of vista_config.
+// headers from config/ and renderer/lights.h (no lights.cpp): they are part of vista_config.
 #pragma once
 
 #include "config/visitor.h"
-#include "renderer/lighting/lights.h"
+#include "renderer/lights.h"
 
 #include <string>
 #include <string_view>
@@ -107,6 +107,6 @@ std::string parseVolumeSpec(std::string_view text, LightVolume& out);
 std::string formatLightSpec(const Light& light);
 std::string formatVolumeSpec(const LightVolume& volume);
 // Whether a NAME of light.NAME / volume.NAME is valid: isValidListName() (config/visitor.h).
-// The scene's lights before animation are collectLights(lights, volumes) (renderer/lighting/lights.h).
+// The scene's lights before animation are collectLights(lights, volumes) (renderer/lights.h).
 
 }  // namespace vista

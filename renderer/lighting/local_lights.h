@@ -16,7 +16,7 @@
 // GPU layouts (std430, renderer/lighting/shaders/lights.glsl):
 //   lights    (tiled, clustered: only the lights whose bounding sphere meets the view frustum,
 //             in light order; naive, hashed: all) 4 vec4 per light: camera-relative position + radius; colour * intensity + spot cone
-//             scale; unit spot axis + cone offset (renderer/lighting/lights.h SpotCone; point: 0, 1); spot shadow tile, point shadow cube (-1: none), 0, 0.
+//             scale; unit spot axis + cone offset (renderer/lights.h SpotCone; point: 0, 1); spot shadow tile, point shadow cube (-1: none), 0, 0.
 //   spheres   vec4 per light: view-space bounding-sphere centre + radius (culling only).
 //   cells     uvec2 (offset, count) per tile (tiled) or per cluster (clustered: index tile.x +
 //             tiles_x (tile.y + tiles_y slice)); count 0xFFFFFFFF = overflow, shade every light.
@@ -27,11 +27,11 @@
 //             word per slot, data values two words (offset, count), offsets one word per entry.
 #pragma once
 
-#include "config/settings.h"
+#include "renderer/gl/objects.h"
 #include "renderer/lighting/cluster_grid.h"
 #include "renderer/lighting/light_hash.h"
-#include "renderer/lighting/lights.h"
-#include "renderer/gl/objects.h"
+#include "renderer/lighting/light_settings.h"
+#include "renderer/lights.h"
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"

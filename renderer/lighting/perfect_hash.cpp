@@ -3,7 +3,7 @@
 // per-group list of slots, which find(), erase() and moving a group on insert() need.
 #include "renderer/lighting/perfect_hash.h"
 
-#include "renderer/lighting/random.h"
+#include "renderer/random.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,12 +2,12 @@
 #include "renderer/meshes/objects.h"
 
 #include "renderer/bindings.h"
+#include "renderer/frustum.h"
 #include "renderer/gl_device.h"
 #include "renderer/pass_kit.h"
 #include "renderer/meshes/gltf_loader.h"
 #include "renderer/meshes/impostor.h"
 #include "renderer/meshes/mesh_lod.h"
-#include "terrain/cdlod.h"
 
 #include <glm/trigonometric.hpp>
 

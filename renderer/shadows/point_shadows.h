@@ -16,11 +16,12 @@
 // texel of a face covers 2 z / resolution metres at that z.
 #pragma once
 
-// spot_shadows.h brings the settings, the light types and the terrain's Frustum (its known edges).
+// spot_shadows.h brings the light types and Frustum.
 #include "renderer/camera.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/shadows/shadow_caster.h"
+#include "renderer/shadows/shadow_settings.h"
 #include "renderer/shadows/spot_shadows.h"
 
 #include <glm/mat4x4.hpp>
@@ -34,6 +35,7 @@ namespace vista {
 
 class Terrain;
 struct TerrainInstance;
+struct TerrainSettings;
 
 inline constexpr int kMaxPointShadows = 16;  // POINT_SHADOW_MAX in point_shadows.glsl
 inline constexpr int kCubeFaces = 6;

@@ -12,20 +12,20 @@
 //     z = n f / (n + depth (f - n))                                    (spotLinearDepth)
 // A texel of a tile covers 2 z tan(outer) / tile metres at distance z (texelPerMetre).
 //
-// Priority: the radius in pixels of the light's bounding sphere (renderer/lighting/lights.h) seen from
+// Priority: the radius in pixels of the light's bounding sphere (renderer/lights.h) seen from
 // the camera, r_px = r / sqrt(d^2 - r^2) * (height / 2) / tan(fov_y / 2) (infinite when the
 // camera is inside the sphere); ties by light order. Lights whose sphere misses the view
 // frustum, smaller than spot_min_screen_px, with radius 0, or cones of 85 deg or wider (no
 // single perspective view holds them) are not candidates.
 #pragma once
 
-#include "config/settings.h"
-#include "renderer/lighting/lights.h"
 #include "renderer/camera.h"
+#include "renderer/frustum.h"
 #include "renderer/gl/objects.h"
+#include "renderer/lights.h"
 #include "renderer/render_context.h"
 #include "renderer/shadows/shadow_caster.h"
-#include "terrain/cdlod.h"
+#include "renderer/shadows/shadow_settings.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -38,6 +38,7 @@ namespace vista {
 
 class Terrain;
 struct TerrainInstance;
+struct TerrainSettings;
 
 inline constexpr int kMaxSpotShadows = 64;          // SPOT_SHADOW_MAX in spot_shadows.glsl
 inline constexpr float kMaxShadowedSpotDeg = 85.0f;  // outer half-angles from here on cast no shadow

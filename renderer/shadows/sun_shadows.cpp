@@ -58,7 +58,7 @@ std::vector<std::pair<double, double>> cascadeSlices(const ShadowSettings& s, do
     return slices;
 }
 
-void SunShadows::prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir,
+void SunShadows::prepare(const ShadowSettings& s, float sun_angular_radius_deg, const glm::dvec3& sun_dir,
                          const ViewParams& view, const ViewParams& fit_view, std::uint64_t sequence_frame) {
     sequence_frame_ = sequence_frame;
     camera_ = view.position;
@@ -67,7 +67,7 @@ void SunShadows::prepare(const ShadowSettings& s, const SkySettings& sky, const 
     const Frustum frustum = frustumFromViewProj(glm::dmat4(vm.view_proj));
     for (std::size_t p = 0; p < view_sides_.size(); ++p)  // left, right, bottom, top: unit normals, for margins in metres
         view_sides_[p] = frustum[p] / std::max(glm::length(glm::dvec3(frustum[p])), 1e-12);
-    tan_sun_radius_ = float(std::tan(glm::radians(double(sky.sun_angular_radius_deg)))) * s.sun_size_scale;
+    tan_sun_radius_ = float(std::tan(glm::radians(double(sun_angular_radius_deg)))) * s.sun_size_scale;
     const auto slices = cascadeSlices(s, view.near_m);
     const bool keep = s.freeze && frozen_ && cascades_.size() == slices.size() && settings_.resolution == s.resolution;
     settings_ = s;

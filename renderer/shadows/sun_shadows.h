@@ -4,12 +4,12 @@
 // casts shadows; a cascade with no caster adds no pass and is read as lit.
 #pragma once
 
-#include "config/settings.h"
+#include "renderer/frustum.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/shadows/cascades.h"
 #include "renderer/shadows/shadow_caster.h"
-#include "terrain/cdlod.h"
+#include "renderer/shadows/shadow_settings.h"
 
 #include <array>
 #include <cstdint>
@@ -21,6 +21,7 @@ namespace vista {
 
 class Terrain;
 struct TerrainInstance;
+struct TerrainSettings;
 
 struct SunShadowStats {
     int cascades = 0;                // in use this frame (PSSM + far)
@@ -58,7 +59,8 @@ public:
     // matrices relative to view's camera. Call before the terrain selection; casterFrustum() is
     // then what the selection should cover. sequence_frame: the frame's place in its sequence
     // (a capture's path frame), on whose multiples of cache_frames kept cascades are redrawn.
-    void prepare(const ShadowSettings& s, const SkySettings& sky, const glm::dvec3& sun_dir, const ViewParams& view,
+    // sun_angular_radius_deg: the drawn sun's ([sky]), for PCSS penumbrae.
+    void prepare(const ShadowSettings& s, float sun_angular_radius_deg, const glm::dvec3& sun_dir, const ViewParams& view,
                  const ViewParams& fit_view, std::uint64_t sequence_frame = 0);
     // Drops the kept cascades (a camera cut or a history reset): the next frame draws them all.
     void forgetKept();

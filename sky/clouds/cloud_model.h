@@ -6,7 +6,7 @@
 // time 1e7 s animates as smoothly as at 10 s) and the coverage swing.
 #pragma once
 
-#include "config/settings.h"
+#include "sky/clouds/cloud_settings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

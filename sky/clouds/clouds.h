@@ -4,10 +4,11 @@
 // active layer) creates no Clouds object and adds no pass (app/frame.cpp).
 #pragma once
 
-#include "config/settings.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "sky/clouds/cloud_settings.h"
+#include "sky/sky_settings.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

@@ -5,8 +5,9 @@
 // their product: a red sun at the horizon or one behind clouds does not flare at full strength.
 #pragma once
 
-#include "config/settings.h"
+#include "sky/clouds/cloud_settings.h"
 #include "sky/sky_lighting.h"
+#include "sky/sky_settings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -7,14 +7,16 @@
 // the drops into the frame's motion vectors (addVelocityPass).
 #pragma once
 
-#include "config/settings.h"
-#include "renderer/lighting/deferred.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
+#include "renderer/lighting/deferred.h"
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "sky/clouds/cloud_settings.h"
 #include "sky/weather/weather_model.h"
+#include "sky/weather/weather_settings.h"
+#include "terrain/terrain_settings.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

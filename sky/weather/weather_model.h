@@ -19,7 +19,8 @@
 // The cycle count and phase are split in double here (integer part, fraction).
 #pragma once
 
-#include "config/settings.h"
+#include "sky/clouds/cloud_settings.h"
+#include "sky/weather/weather_settings.h"
 #include "terrain/cdlod.h"
 
 #include <glm/vec2.hpp>

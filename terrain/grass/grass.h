@@ -5,13 +5,14 @@
 // [grass] and [terrain] are enabled (the frame drops it otherwise: no pass, no buffers).
 #pragma once
 
-#include "config/settings.h"
-#include "terrain/grass/grass_placement.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "terrain/grass/grass_placement.h"
+#include "terrain/grass/grass_settings.h"
+#include "terrain/terrain_settings.h"
 
 #include <cstdint>
 #include <string>

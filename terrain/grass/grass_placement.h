@@ -9,7 +9,7 @@
 // a hash of (n.x, n.z, j): the same place always shows the same blades.
 #pragma once
 
-#include "config/settings.h"
+#include "terrain/grass/grass_settings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -11,7 +11,6 @@
 // Only exists while [water] is enabled (the frame drops it otherwise: no pass, no buffers).
 #pragma once
 
-#include "config/settings.h"
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
 #include "renderer/lighting/light_variants.h"
@@ -19,6 +18,7 @@
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
 #include "renderer/shadows/sun_shadows.h"
+#include "terrain/water/water_settings.h"
 #include "terrain/water/waves.h"
 
 #include <glm/mat4x4.hpp>

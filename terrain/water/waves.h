@@ -18,7 +18,7 @@
 // (1 - w^2) (a k)^2 / 2, widens the specular lobe instead (water.surface's roughness).
 #pragma once
 
-#include "config/settings.h"
+#include "terrain/water/water_settings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -2,7 +2,7 @@
 // lookup consistent with slice bounds, conservative CPU light assignment against brute force at
 // random points, and projected sphere bounds that hold the projected sphere.
 #include "renderer/lighting/cluster_grid.h"
-#include "renderer/lighting/random.h"
+#include "renderer/random.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

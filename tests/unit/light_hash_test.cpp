@@ -3,7 +3,7 @@
 // equal to the leaf cell's lights, incremental updates equal to a fresh build, memory bound,
 // zero-radius lights, 100,000 lights).
 #include "renderer/lighting/light_hash.h"
-#include "renderer/lighting/random.h"
+#include "renderer/random.h"
 
 #include <doctest/doctest.h>
 #include <glm/common.hpp>

@@ -1,8 +1,8 @@
 // Local lights: the windowed falloff and spot cone the shaders mirror, spot bounding spheres,
 // deterministic generation volumes, animation, and the [lights] ini format.
 #include "renderer/lighting/light_settings.h"
-#include "renderer/lighting/lights.h"
-#include "renderer/lighting/random.h"
+#include "renderer/lights.h"
+#include "renderer/random.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

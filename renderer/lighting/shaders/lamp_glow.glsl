@@ -34,7 +34,7 @@ flat in uint v_light;
 layout(location = 0) out vec4 o_color;
 
 const float kQuarterPi = 0.78539816;
-const float kFalloffEps = 0.01;  // m^2, renderer/lighting/lights.h kFalloffEpsM2
+const float kFalloffEps = 0.01;  // m^2, renderer/lights.h kFalloffEpsM2
 const vec2 kTableSize = vec2(128.0, 256.0);  // kGlowTableU, kGlowTableV
 
 float glowF(float u, float x) {

@@ -2,7 +2,7 @@
 // light octree, and the per-light shading. Included by the deferred shading pass
 // (light_shade.glsl), the culling pass (light_cull.glsl) and forward passes (transparent
 // surfaces): any of them finds a position's candidate lights with lightRange() and shades them
-// with shadeLocalLight(). Formulas and layouts: renderer/lighting/lights.h, renderer/lighting/local_lights.h.
+// with shadeLocalLight(). Formulas and layouts: renderer/lights.h, renderer/lighting/local_lights.h.
 // Needs common.glsl, gbuffer.glsl and brdf.glsl first. With HAS_SPOT_SHADOWS (fragment stages)
 // shadowed spot lights read their tile of the spot shadow atlas; with HAS_POINT_SHADOWS shadowed
 // point lights read their depth cube. (The filter taps are included
@@ -39,7 +39,7 @@ layout(std140, binding = BINDING_LIGHT_GRID) uniform LightGrid {
 };
 
 const uint kOverflowCount = 0xFFFFFFFFu;
-const float kLightFalloffEps = 0.01;  // m^2, renderer/lighting/lights.h kFalloffEpsM2
+const float kLightFalloffEps = 0.01;  // m^2, renderer/lights.h kFalloffEpsM2
 
 // The lights that may reach one position: indices u_light_indices[first .. first + count), or
 // when `all` is set every light (first .. first + count: first > 0 for a later chunk of them).

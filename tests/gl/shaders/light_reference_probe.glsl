@@ -1,6 +1,6 @@
 // Test probe (tests/gl/lights_test.cpp): the radiance light 0 reflects from a white-ish
 // up-facing surface at a grid of camera-relative points, through shadeLocalLight() and
-// evalBrdf(), for comparison with the CPU mirror (renderer/lighting/lights.h, renderer/lighting/brdf.h).
+// evalBrdf(), for comparison with the CPU mirror (renderer/lights.h, renderer/lighting/brdf.h).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER

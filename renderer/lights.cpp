@@ -1,8 +1,8 @@
 // Light falloff, spot cones, bounding spheres, generation volumes and animation. The float
 // functions are written the way the GLSL evaluates them, so CPU and GPU agree.
-#include "renderer/lighting/lights.h"
+#include "renderer/lights.h"
 
-#include "renderer/lighting/random.h"
+#include "renderer/random.h"
 
 #include <glm/geometric.hpp>
 
