@@ -106,6 +106,8 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
     if (cell_buffer_.size() < bytes)
         cell_buffer_ = gl::Buffer::create(std::max<GLsizeiptr>(bytes, GLsizeiptr(layout.cells) * layout.cells * layout.cells * 4),
                                           nullptr, GL_DYNAMIC_STORAGE_BIT, "weather drop cells");
+    // Once per frame, for weather.rain and weather.velocity (the graph may run either first).
+    glNamedBufferSubData(cell_buffer_.id(), 0, bytes, cells_.data());
     const float keep_below = s.intensity * float(layout.drops_per_cell);
     const GLsizei instances = GLsizei(stats_.drop_candidates);
 
@@ -135,7 +137,7 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
             GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", rainDefines(snow, false));
             glUseProgram(program);
             bindPassBlock(rc, program, *block);
-            uploadCells();
+            bindCells();
             if (count)
                 glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, counters.request(rc.frame, "weather.drops"));
             glBindVertexArray(rc.empty_vao);
@@ -196,8 +198,7 @@ void Weather::addPasses(FrameGraph& graph, const RenderContext& rc, const Weathe
     targets.hdr = splash.hdr;
 }
 
-void Weather::uploadCells() const {
-    glNamedBufferSubData(cell_buffer_.id(), 0, GLsizeiptr(cells_.size() * sizeof(std::uint32_t)), cells_.data());
+void Weather::bindCells() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kWeatherCells, cell_buffer_.id());
 }
 
@@ -223,7 +224,7 @@ TextureHandle Weather::addVelocityPass(FrameGraph& graph, const RenderContext& r
             const GLuint program = rc.shaders.id("sky/weather/shaders/weather_rain.glsl", rainDefines(draw.snow, true));
             glUseProgram(program);
             bindPassBlock(rc, program, *block);
-            uploadCells();  // the graph may run this pass before weather.rain (neither reads the other)
+            bindCells();
             glBindVertexArray(rc.empty_vao);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);  // reversed-Z: in front of the scene

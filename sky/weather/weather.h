@@ -67,7 +67,7 @@ private:
     // The camera's velocity (m/s) from the previous call: streaks follow the motion relative
     // to the camera. 0 on the first frame, when time did not advance or jumped by over 1 s.
     glm::dvec3 cameraVelocity(const glm::dvec3& position, double time_s);
-    void uploadCells() const;  // cells_ into cell_buffer_, bound for the rain shader
+    void bindCells() const;  // this frame's cells (uploaded by addPasses) for the rain shader
 
     struct RainDraw {
         std::shared_ptr<const WeatherRainBlock> block;  // weather.rain's uniforms this frame
