@@ -37,6 +37,10 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
     v.field({"coverage_period_s", "s", "period of the coverage swing"}, s.coverage_period_s, 1.0f, 1.0e7f);
     v.field({"temporal", "", "accumulate the march over frames, reprojected along the clouds' depth (clouds.temporal)"}, s.temporal);
     v.field({"temporal_blend", "", "share of this frame's march once the history is full (1: no history)"}, s.temporal_blend, 0.01f, 1.0f);
+    v.field({"march_subset", "",
+             "with temporal: march 1 pixel of every march_subset per frame, in a Bayer order (1: every pixel, 4: 1 of 2x2, "
+             "16: 1 of 4x4; other values round down to these); clouds.temporal reprojects the rest"},
+            s.march_subset, 1, 16);
     v.field({"shadows", "", "cloud shadows on the terrain (clouds.shadow)"}, s.shadows);
     v.field({"shadow_size", "texels", "shadow map texels per side"}, s.shadow_size, 16, 2048);
     v.field({"shadow_extent_km", "km", "ground covered by the shadow map around the camera"}, s.shadow_extent_km, 0.1f, 1000.0f);

@@ -21,6 +21,8 @@ namespace {
 #include "sky/clouds/shaders/clouds_temporal_block.glsl"
 }  // namespace
 
+int cloudSubsetStride(int march_subset) { return march_subset >= 16 ? 4 : march_subset >= 4 ? 2 : 1; }
+
 // std140 mirror of CloudUniforms in sky/clouds/shaders/clouds_common.glsl.
 struct Clouds::Gpu {
     struct Layer {
@@ -77,7 +79,9 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     }
     const glm::dvec3 sun = sunDirection(sky);
     const double slant = std::max(sun.y, 0.05);
-    g.count = glm::ivec4(n, clouds.light_samples, 0, 0);
+    temporal_ = clouds.temporal && clouds.temporal_blend < 1.0f;
+    subset_stride_ = temporal_ ? cloudSubsetStride(clouds.march_subset) : 1;
+    g.count = glm::ivec4(n, clouds.light_samples, subset_stride_, 0);
     g.planet = glm::vec4(float(ground_r), float(ground_r + altitude), clouds.max_distance_km * 1e3f, clouds.phase_g);
     g.ambient = glm::vec4(glm::vec3(sky_irradiance_up / std::numbers::pi) * clouds.ambient, 0.0f);
     // The shadow map's centre: where the sun's ray through the camera meets y = 0, snapped to
@@ -90,7 +94,6 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     g.sun = glm::vec4(glm::vec3(sun), float(slant));
     shadow_size_ = clouds.shadow_size;
     half_resolution_ = clouds.half_resolution;
-    temporal_ = clouds.temporal && clouds.temporal_blend < 1.0f;
     temporal_blend_ = clouds.temporal_blend;
     if (!temporal_) release(rc.device);  // history off keeps nothing
     shadow_map_ = glm::vec4(float(rel.x), float(rel.y), float(1.0 / extent), float(slant));
@@ -136,6 +139,10 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
     const bool own_target = half || temporal;  // else blended straight over targets.hdr
     const TextureDesc cloud_desc = half ? TextureDesc{(rc.view.width + 1) / 2, (rc.view.height + 1) / 2, PixelFormat::RGBA16F}
                                         : TextureDesc{rc.view.width, rc.view.height, PixelFormat::RGBA16F};
+    // A subset march (clouds_subset.glsl) writes one texel per stride x stride block of cloud_desc.
+    const int stride = subset_stride_;
+    const TextureDesc march_desc{(cloud_desc.width + stride - 1) / stride, (cloud_desc.height + stride - 1) / stride,
+                                 PixelFormat::RGBA16F};
     std::vector<std::string> defines;
     if (half) defines.push_back("HALF_RES");
     if (temporal) defines.push_back("TEMPORAL");
@@ -144,10 +151,10 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
             data.transmittance = b.read(transmittance);
             data.depth = b.read(targets.depth);
             if (own_target) {
-                data.out = b.write(b.create(half ? "clouds.half" : "clouds.full", cloud_desc));
+                data.out = b.write(b.create(stride > 1 ? "clouds.subset" : half ? "clouds.half" : "clouds.full", march_desc));
                 if (temporal)
                     data.distance = b.write(
-                        b.create("clouds.distance", {cloud_desc.width, cloud_desc.height, PixelFormat::R32F}));
+                        b.create("clouds.distance", {march_desc.width, march_desc.height, PixelFormat::R32F}));
             } else {
                 data.out = b.write(targets.hdr);
             }
@@ -230,7 +237,7 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
     history_frames_ = history ? std::min(history_frames_ + 1, int(std::lround(1.0 / temporal_blend_))) : 1;
     const CloudsTemporalBlock block{
         glm::mat4(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0)),
-        glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), 0.0f),
+        glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), float(subset_stride_)),
         glm::vec4(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y)};
     history_view_ = rc.view;
     history_valid_ = true;

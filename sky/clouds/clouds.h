@@ -21,6 +21,10 @@ namespace vista {
 
 class SkyAtmosphere;
 
+// The side of the pixel block of which a subset march ([clouds] march_subset: 1, 4 or 16, others
+// rounded down) marches one pixel per frame: 1, 2 or 4.
+int cloudSubsetStride(int march_subset);
+
 // Every program the clouds use, with its defines (for FrameRenderer::allPrograms()).
 ProgramList cloudPrograms();
 
@@ -43,6 +47,8 @@ public:
     // With [clouds] temporal the march goes to a target of its own (half or full size) with its
     // distances, "clouds.temporal" accumulates it with the reprojected history (kept here, across
     // frames) and "clouds.composite" blends the result. cut: drop the history (a camera cut).
+    // With a march subset (temporal only) the march covers one pixel per block in a target
+    // 1/stride its size ("clouds.subset") and "clouds.temporal" builds the whole cloud target.
     void addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyAtmosphere& sky, SceneTargets& targets,
                       bool cut = false);
     // Tells the device the history textures are going (it caches framebuffers by texture name)
@@ -67,6 +73,7 @@ private:
     glm::vec4 shadow_map_{0.0f};
     // Temporal accumulation: colour (RGBA16F) and distance (km) + frames (RG16F), ping-ponged.
     bool temporal_ = true;
+    int subset_stride_ = 1;  // cloudSubsetStride([clouds] march_subset) with temporal, else 1
     float temporal_blend_ = 0.0625f;
     gl::Texture history_[2], history_distance_[2];
     int history_current_ = 0;

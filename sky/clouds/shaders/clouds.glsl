@@ -12,7 +12,9 @@
 // of its own, plus the clouds' mean distance (attachment 1) along which clouds_temporal.glsl
 // reprojects the history. The start offset is spatiotemporal blue noise, so the error of one
 // frame is fine-grained and a pixel's offsets over frames are evenly spread (accumulated by
-// "clouds.temporal").
+// "clouds.temporal"). With a march subset (c_count.z = stride > 1, clouds_subset.glsl) the target is
+// 1/stride of the cloud target's size and each texel marches the pixel of its block that this frame
+// stands for; the blue-noise index then counts that pixel's own visits (every stride^2 frames).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -23,6 +25,7 @@
 #include "../../shaders/atmosphere.glsl"
 #include "clouds_common.glsl"
 #include "../../../renderer/shaders/blue_noise.glsl"
+#include "clouds_subset.glsl"
 layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
@@ -58,7 +61,23 @@ vec3 viewTransmittance(float r, float mu, float d) {
 }
 
 void main() {
-    vec3 dir = viewRay(v_uv);
+    // This texel's pixel of the cloud target and its uv (the same as v_uv without a subset).
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec2 uv = v_uv;
+    uint noise_frame = uint(u_time.z);
+    int stride = c_count.z;
+    if (stride > 1) {
+#ifdef HALF_RES
+        ivec2 size = (textureSize(u_depth, 0) + 1) / 2;
+#else
+        ivec2 size = textureSize(u_depth, 0);
+#endif
+        pixel = pixel * stride + cloudSubsetOffset(stride, noise_frame);
+        if (any(greaterThanEqual(pixel, size))) discard;
+        uv = (vec2(pixel) + 0.5) / vec2(size);
+        noise_frame /= uint(stride * stride);
+    }
+    vec3 dir = viewRay(uv);
     vec3 sun = a_sun.xyz;
     float rc = c_planet.y, mu = clamp(dir.y, -1.0, 1.0);
     float t_scene = 1e30;
@@ -66,13 +85,13 @@ void main() {
     // One texel for 2x2 pixels: cut at the farthest of them (clouds.composite hides the clouds
     // behind nearer geometry per pixel).
     ivec2 full = textureSize(u_depth, 0) - 1;
-    ivec2 q = ivec2(gl_FragCoord.xy) * 2;
+    ivec2 q = pixel * 2;
     float depth = min(min(texelFetch(u_depth, min(q, full), 0).r, texelFetch(u_depth, min(q + ivec2(1, 0), full), 0).r),
                       min(texelFetch(u_depth, min(q + ivec2(0, 1), full), 0).r, texelFetch(u_depth, min(q + 1, full), 0).r));
 #else
-    float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+    float depth = texelFetch(u_depth, pixel, 0).r;
 #endif
-    if (depth > 0.0) t_scene = length(positionFromDepth(v_uv, depth));
+    if (depth > 0.0) t_scene = length(positionFromDepth(uv, depth));
 
     // The layers' stretches, nearest first.
     vec2 seg[CLOUD_MAX_LAYERS];
@@ -95,7 +114,7 @@ void main() {
     float nu = dot(dir, sun);
     float g = c_planet.w;
     float phase = mix(hgPhase(nu, g), hgPhase(nu, -0.3), 0.25);
-    float jitter = blueNoise(ivec2(gl_FragCoord.xy), uint(u_time.z), 0);
+    float jitter = blueNoise(pixel, noise_frame, 0);
     float fade_start = 0.6 * c_planet.z;
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0, weight = 0.0, t_weighted = 0.0;
