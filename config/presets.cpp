@@ -139,13 +139,17 @@ const QualityKnob kKnobs[] = {
     {"sky.aerial_steps", "steps", {1, 1, 2, 4, 8}, aerialOn},
     // Clouds: ray marching, self-shadowing, their shadow map and the noise detail per layer.
     // Reference: 8 octaves and full resolution; light samples, steps and the shadow map not the maximum.
+    // Every preset marches 1 of 16 pixels a frame ([clouds] march_subset, docs/temporal.md), the
+    // reference every pixel; high and ultra spend the 16x saved on the reference's march (half
+    // size, where the cloud passes cost about what high's 8-step every-pixel march did).
+    {"clouds.march_subset", "pixels", {16, 16, 16, 16, 1}, cloudsOn, nullptr, nullptr, nullptr, false, true},
     {"clouds.half_resolution", "", {1, 1, 1, 1, 0}, cloudsOn, nullptr, nullptr, nullptr, true, true},
-    {"clouds.light_samples", "samples", {1, 2, 3, 6, 8}, cloudsOn},
+    {"clouds.light_samples", "samples", {1, 2, 8, 8, 8}, cloudsOn},
     {"clouds.shadow_size", "texels", {128, 256, 256, 512, 1024}, cloudShadowsOn},
-    {"clouds.low.octaves", "", {4, 4, 4, 5, 8}, lowCloudsOn},
-    {"clouds.low.steps", "steps", {4, 6, 8, 16, 32}, lowCloudsOn},
-    {"clouds.high.octaves", "", {2, 3, 3, 4, 8}, highCloudsOn},
-    {"clouds.high.steps", "steps", {1, 2, 2, 4, 16}, highCloudsOn},
+    {"clouds.low.octaves", "", {4, 4, 8, 8, 8}, lowCloudsOn},
+    {"clouds.low.steps", "steps", {4, 6, 32, 32, 32}, lowCloudsOn},
+    {"clouds.high.octaves", "", {2, 3, 8, 8, 8}, highCloudsOn},
+    {"clouds.high.steps", "steps", {1, 2, 16, 16, 16}, highCloudsOn},
     // Grass: segments per near blade (density and radius change what is drawn, not how well).
     {"grass.segments", "", {2, 3, 4, 6, 8}, grassOn},
     // Objects: the mesh LOD distances and where octahedral impostors take over; the reference
