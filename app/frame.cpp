@@ -333,7 +333,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
-    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain, extra,
+    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, &terrain_caster_, extra,
                                                      lowestReceiver(*terrain_, s, objects_.get()));
     const SunShadowStats& st = sun_shadows_->stats();
     report.counters["shadows.cascades"] = double(st.cascades);
@@ -387,7 +387,7 @@ bool FrameRenderer::preparePointShadows(const RenderContext& rc, const Settings&
 
 PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                                    const ShadowCaster& extra, FrameReport& report) {
-    PointShadowInput input = point_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    PointShadowInput input = point_shadows_->addPass(graph, rc, &terrain_caster_, extra);
     local_lights_->setPointShadowSlots(*point_shadows_);
     reportShadowedLights(report, "shadows.point_", point_shadows_->stats());
     return input;
@@ -395,7 +395,7 @@ PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const Rend
 
 SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                                  const ShadowCaster& extra, FrameReport& report) {
-    SpotShadowInput input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    SpotShadowInput input = spot_shadows_->addPass(graph, rc, &terrain_caster_, extra);
     local_lights_->setShadowSlots(*spot_shadows_);
     reportShadowedLights(report, "shadows.spot_", spot_shadows_->stats());
     return input;
@@ -584,6 +584,7 @@ FrameRenderer::Shadows FrameRenderer::addShadowPasses(FrameGraph& graph, const F
                                                       const FrameRequest& request, FrameReport& report) {
     Shadows shadows;
     if (!f.terrain) return shadows;
+    terrain_caster_.bind(*terrain_, f.s.terrain);  // what the shadow passes draw of the terrain, this frame
     shadows.sun = addTerrainAndShadowPasses(graph, f.rc, f.s, request.shadow_fit_view, report, casters.caster);
     if (spot_shadows_) shadows.spot = addSpotShadowPass(graph, f.rc, f.s, casters.caster, report);
     if (point_shadows_) shadows.point = addPointShadowPass(graph, f.rc, f.s, casters.caster, report);

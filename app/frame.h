@@ -26,6 +26,7 @@
 #include "sky/sky_lighting.h"
 #include "sky/weather/weather.h"
 #include "terrain/terrain.h"
+#include "terrain/terrain_caster.h"
 #include "terrain/water/water.h"
 
 #include <cstdint>
@@ -239,6 +240,7 @@ private:
     gl::Buffer frame_uniforms_;
     std::uint64_t frame_ = 0;
     FeatureSlot<Terrain> terrain_{"terrain.memory_bytes"};
+    TerrainShadowCaster terrain_caster_;  // the terrain as the shadow passes draw it (bound each frame)
     FeatureSlot<SkyAtmosphere> sky_{"sky.memory_bytes"};  // LUTs kept across frames
     FeatureSlot<Clouds> clouds_{"clouds.memory_bytes"};  // empty while [clouds] draws nothing
     FeatureSlot<LocalLights> local_lights_{"lights.memory_bytes"};  // empty while the scene has no local lights

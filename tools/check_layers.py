@@ -61,9 +61,6 @@ ALLOWED["config/scene"] = [name for name, _ in LAYERS if name not in ("config/sc
 KNOWN = {
     ("renderer/meshes/objects.h", "terrain/scatter/object_settings.h"): "object drawing split from placement: placement under terrain/scatter",
     ("renderer/meshes/objects.h", "terrain/scatter/scatter.h"): "object drawing split from placement: placement under terrain/scatter",
-    ("renderer/shadows/spot_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
-    ("renderer/shadows/point_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
-    ("renderer/shadows/sun_shadows.cpp", "terrain/terrain.h"): "the terrain as a ShadowCaster like grass",
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')

@@ -3,7 +3,6 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -79,8 +78,6 @@ int pointCubeFace(const glm::dvec3& d) {
 }
 
 PointShadows::PointShadows() = default;
-PointShadows::~PointShadows() = default;
-
 bool PointShadows::prepare(const ShadowSettings& s, std::span<const Light> lights, const ViewParams& view,
                            const ViewMatrices& m) {
     settings_ = s;
@@ -119,8 +116,8 @@ void PointShadows::allocate(int resolution, int cubes) {
     }
 }
 
-PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                       const TerrainSettings& ts, const ShadowCaster& extra) {
+PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                       const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     instances_.resize(count * kCubeFaces);
@@ -133,7 +130,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
         for (std::size_t f = 0; f < kCubeFaces; ++f) {
             auto& list = instances_[k * kCubeFaces + f];
             list.clear();
-            tess_[k * kCubeFaces + f] = terrain ? terrain->shadowInstances(ts, frusta_[k * kCubeFaces + f], list, true) : 0;
+            tess_[k * kCubeFaces + f] = terrain ? terrain->pick(frusta_[k * kCubeFaces + f], list, true) : 0;
             stats_.caster_instances += std::int64_t(list.size());
             faces += list.size();
         }
@@ -163,7 +160,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             data.cubes = b.write(cubes_handle);
             if (extra.valid()) b.read(extra.reads);
         },
-        [this, &rc, terrain, &ts, extra](const Data&, PassContext&) {
+        [this, &rc, terrain, extra](const Data&, PassContext&) {
             const int res = resolution_;
             // Face f of cube k is layer 6 k + f; every drawn light's faces start at the light's radius.
             auto bindFace = [&](std::size_t k, std::size_t f) {
@@ -182,9 +179,9 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDepthFunc(GL_GREATER);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+            GLuint program = terrain->program(rc);
             glUseProgram(program);
-            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t i) {
+            terrain->drawLists(rc, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);
                 return glm::mat4(views_[i / kCubeFaces].view_proj[i % kCubeFaces]);
             });

@@ -22,6 +22,7 @@
 #include "renderer/render_context.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 #include "renderer/shadows/spot_shadows.h"
 
 #include <glm/mat4x4.hpp>
@@ -33,9 +34,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 inline constexpr int kMaxPointShadows = 16;  // POINT_SHADOW_MAX in point_shadows.glsl
 inline constexpr int kCubeFaces = 6;
@@ -75,7 +73,6 @@ struct PointShadowStats {
 class PointShadows {
 public:
     PointShadows();
-    ~PointShadows();  // in the .cpp: TerrainInstance is incomplete here
     PointShadows(const PointShadows&) = delete;
     PointShadows& operator=(const PointShadows&) = delete;
     // Picks this frame's shadowed point lights and their face views relative to the camera.
@@ -88,7 +85,7 @@ public:
 
     // "shadows.point_cubes": every picked light's six faces (terrain from the current selection,
     // then `extra` when valid). Lights with no terrain near them keep slot -1 (read as lit).
-    PointShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    PointShadowInput addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                              const ShadowCaster& extra = {});
     // After addPass: the cube of pick k, or -1.
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }

@@ -3,7 +3,6 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -146,8 +145,8 @@ void SpotShadows::allocate(int resolution) {
     }
 }
 
-SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts, const ShadowCaster& extra) {
+SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                     const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     tiles_per_side_ = spotAtlasTilesPerSide(std::min(s.spot_max_lights, kMaxSpotShadows));
@@ -160,7 +159,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
     for (std::size_t k = 0; k < count; ++k) {
         auto& list = instances_[k];
         list.clear();
-        tess_[k] = terrain ? terrain->shadowInstances(ts, frusta_[k], list, true) : 0;
+        tess_[k] = terrain ? terrain->pick(frusta_[k], list, true) : 0;
         stats_.caster_instances += std::int64_t(list.size());
         if (list.empty()) continue;  // nothing casts: the light stays unshadowed (lit), no tile drawn
         slots_[k] = int(k);
@@ -191,7 +190,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             data.atlas = b.write(atlas);
             if (extra.valid()) b.read(extra.reads);
         },
-        [this, &rc, terrain, &ts, tile, extra](const Data&, PassContext&) {
+        [this, &rc, terrain, tile, extra](const Data&, PassContext&) {
             const int res = settings_.spot_atlas_resolution;
             bindTarget(atlas_fb_.id(), res, res);
             glDepthMask(GL_TRUE);
@@ -202,14 +201,14 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glEnable(GL_SCISSOR_TEST);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.spot_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+            GLuint program = terrain->program(rc);
             glUseProgram(program);
             auto bindTile = [&](std::size_t k) {
                 const int x = int(k) % tiles_per_side_ * tile, y = int(k) / tiles_per_side_ * tile;
                 glViewport(x, y, tile, tile);
                 glScissor(x, y, tile, tile);
             };
-            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t k) {
+            terrain->drawLists(rc, program, instances_, tess_, [&](std::size_t k) {
                 bindTile(k);
                 return glm::mat4(views_[k].view_proj);
             });

@@ -26,6 +26,7 @@
 #include "renderer/render_context.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -36,9 +37,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 inline constexpr int kMaxSpotShadows = 64;          // SPOT_SHADOW_MAX in spot_shadows.glsl
 inline constexpr float kMaxShadowedSpotDeg = 85.0f;  // outer half-angles from here on cast no shadow
@@ -108,7 +106,7 @@ public:
     // "shadows.spot_atlas": every picked light's tile (terrain casters from the current
     // selection, then `extra`, e.g. grass, when valid). Lights with no terrain in their frustum
     // keep slot -1 (see slotOf()).
-    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                             const ShadowCaster& extra = {});
     // After addPass: the tile of pick k, or -1 when nothing casts into it (read as lit).
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }

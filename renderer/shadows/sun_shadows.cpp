@@ -3,7 +3,6 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -141,8 +140,8 @@ void SunShadows::allocate(int resolution, int layers) {
     }
 }
 
-SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts, const ShadowCaster& extra, double receivers_above_m) {
+SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                     const ShadowCaster& extra, double receivers_above_m) {
     const ShadowSettings& s = settings_;
     const int count = int(cascades_.size());
     stats_ = {};
@@ -157,10 +156,9 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     const double texel0 = count > 0 ? cascades_[0].texel_m : 1.0;
     // Casters matter up to where a ray towards the sun clears the terrain's whole height span.
     double reach = std::numeric_limits<double>::infinity();
-    if (terrain && terrain->quadtree().levels() > 0) {
-        const MinMaxQuadtree& tree = terrain->quadtree();
-        glm::vec2 span = tree.minMax(tree.levels() - 1, 0, 0);
-        reach = (double(span.y) - double(span.x)) / std::max(light_.dir.y, 1e-3) + 1.0;
+    if (terrain) {
+        const glm::dvec2 span = terrain->heightRange();
+        reach = (span.y - span.x) / std::max(light_.dir.y, 1e-3) + 1.0;
     }
     for (int i = 0; i < count; ++i) {
         const ShadowCascade& c = cascades_[std::size_t(i)];
@@ -204,8 +202,8 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
             }
             // Tessellated casters where the cascade serves displaced ground.
             std::size_t skipped = 0;
-            tess_[std::size_t(i)] = terrain->shadowInstances(ts, casterPlanes(light_, c, camera_, reach), list,
-                                                             serves_from < terrain->tessReach(ts), keep, &skipped);
+            tess_[std::size_t(i)] = terrain->pick(casterPlanes(light_, c, camera_, reach), list,
+                                                  serves_from < terrain->tessReach(), keep, &skipped);
             stats_.casters_skipped += std::int64_t(skipped);
         }
         stats_.caster_instances += std::int64_t(list.size());
@@ -231,7 +229,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 data.map = b.write(map);
                 if (draw_extra) b.read(extra.reads);
             },
-            [this, &rc, terrain, &ts, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
+            [this, &rc, terrain, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
                 const int res = settings_.resolution;
                 bindTarget(layer_fbs_[std::size_t(i)].id(), res, res);
                 glDepthMask(GL_TRUE);
@@ -242,7 +240,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_DEPTH_CLAMP);  // casters between the box and the sun land on depth 0
                 glEnable(GL_POLYGON_OFFSET_FILL);
                 glPolygonOffset(settings_.slope_bias, 0.0f);
-                GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+                GLuint program = terrain->program(rc);
                 glUseProgram(program);
                 const glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 // Seen from the sun, the terrain's back faces lie behind its front faces (a
@@ -250,7 +248,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
                 glFrontFace(GL_CCW);
-                terrain->drawShadow(rc, ts, program, m, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
+                terrain->draw(rc, program, m, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
                 glDisable(GL_CULL_FACE);
                 if (extra.valid()) extra.draw(m);
                 glDisable(GL_POLYGON_OFFSET_FILL);

@@ -10,6 +10,7 @@
 #include "renderer/shadows/cascades.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 
 #include <array>
 #include <cstdint>
@@ -19,9 +20,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 struct SunShadowStats {
     int cascades = 0;                // in use this frame (PSSM + far)
@@ -75,7 +73,7 @@ public:
     // The farthest cache_cascades cascades keep their map from the frame that drew them while
     // their snapped box and the sun stay put, up to cache_frames frames (shadows.cascades_cached);
     // one that draws `extra` (grass sways) is drawn every frame.
-    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                              const ShadowCaster& extra = {},
                              double receivers_above_m = -std::numeric_limits<double>::infinity());
 
