@@ -1,6 +1,8 @@
 // Per-cell scatter placement (see scatter.h).
 #include "terrain/scatter/scatter.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,5 +58,28 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
         for (int i = min_cell.x; i <= max_cell.x; ++i) scatterCell(r, {i, k}, ground, out);
     return out;
 }
+
+std::vector<ObjectPlacement> placeObjects(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area) {
+    std::vector<ObjectPlacement> out;
+    for (const NamedObject& o : s.objects) {
+        PlacedObject p;
+        p.position = o.object.position;
+        if (o.object.ground_m >= 0.0f) {
+            const GroundSample g = ground ? ground(p.position.x, p.position.z) : GroundSample{};
+            p.position.y = (g.valid ? g.height_m : 0.0) + o.object.ground_m;
+        }
+        p.yaw_rad = float(glm::radians(double(o.object.yaw_deg)));
+        p.scale = o.object.scale;
+        out.push_back({"object." + o.name, {o.object.file}, {p}});
+    }
+    for (const NamedScatter& sc : s.scatters) {
+        ObjectPlacement& placement = out.emplace_back(ObjectPlacement{"scatter." + sc.name, sc.rule.files, {}});
+        if (!ground || area.max.x <= area.min.x) continue;  // scatter needs a terrain
+        placement.instances = scatterRegion(sc.rule, scatterCellOf(sc.rule, area.min), scatterCellOf(sc.rule, area.max), ground);
+    }
+    return out;
+}
+
+bool samePlacement(const ObjectsSettings& a, const ObjectsSettings& b) { return a.objects == b.objects && a.scatters == b.scatters; }
 
 }  // namespace vista
