@@ -621,35 +621,16 @@ void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, 
 
 void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s, BufferHandle lists,
                              SceneTargets& targets) {
-    struct DrawData {
-        BufferHandle lists;
-        SceneTargets t;
-    };
-    const DrawData& d = graph.addPass<DrawData>("objects.gbuffer",
-        [&](PassBuilder& b, DrawData& data) {
-            data.lists = b.read(lists);
-            data.t = targets;
-            data.t.hdr = b.write(targets.hdr);
-            data.t.albedo = b.write(targets.albedo);
-            data.t.normal = b.write(targets.normal);
-            data.t.depth = b.write(targets.depth);
-        },
-        [this, &rc, &s](const DrawData& data, PassContext& ctx) {
-            // Baked the first time impostors can be drawn (the atlas render binds its own target).
-            const bool impostors = s.impostor_distance_m < s.max_distance_m;
-            if (impostors) bakeImpostors(rc);
-            const TextureDesc& desc = ctx.desc(data.t.hdr);
-            GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
-                                              ctx.texture(data.t.depth));
-            bindTarget(fb, desc.width, desc.height);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_TRUE);
+    const bool impostors = s.impostor_distance_m < s.max_distance_m;
+    addGbufferDrawPass(graph, rc, "objects.gbuffer", lists, targets,
+        [this, &rc, &s, impostors] {
             drawList(rc, rc.matrices.view_proj, false, &s);
             if (impostors) drawImpostors(rc, s);
-            glDisable(GL_DEPTH_TEST);
+        },
+        [this, &rc, impostors] {
+            // Baked the first time impostors can be drawn (the atlas render binds its own target).
+            if (impostors) bakeImpostors(rc);
         });
-    targets = d.t;
 }
 
 }  // namespace vista
