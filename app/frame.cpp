@@ -24,6 +24,7 @@
 #include "sky/weather/weather.h"
 #include "sky/weather/weather_model.h"
 #include "terrain/material_weights.h"
+#include "terrain/scatter/scatter.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -32,6 +33,29 @@
 #include <limits>
 
 namespace vista {
+
+namespace {
+
+// The ground under a point for the placement of objects: height, slope from central differences
+// over 1 m, and the terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
+GroundFunction terrainGround(const Terrain& terrain, const TerrainSettings& ts) {
+    return [t = &terrain, ts, m = terrain.mapping()](double x, double z) {
+        GroundSample g;
+        const double half = m.size_m * 0.5;
+        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
+        g.valid = true;
+        g.height_m = t->heightAt(x, z);
+        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
+        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
+        g.slope = std::sqrt(dx * dx + dz * dz);
+        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
+        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
+        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
+        return g;
+    };
+}
+
+}  // namespace
 
 ProgramList allPrograms() {
     ProgramList programs = {
@@ -115,30 +139,20 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
         objects_.release();  // nothing placed: no object, no buffers
         return;
     }
-    objects_.use();
-    const Terrain* t = terrain_.get();
-    const TerrainSettings ts = s.terrain;
-    const TerrainMapping& m = t->mapping();
-    // The ground under a point: height, slope from central differences over 1 m, and the
-    // terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
-    GroundFunction ground = [t, ts, m](double x, double z) {
-        GroundSample g;
+    if (!objects_ || !samePlacement(s.objects, objects_placed_for_)) {
+        objects_.use();
+        objects_placed_for_ = s.objects;
+        const TerrainMapping& m = terrain_->mapping();
         const double half = m.size_m * 0.5;
-        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
-        g.valid = true;
-        g.height_m = t->heightAt(x, z);
-        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
-        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
-        g.slope = std::sqrt(dx * dx + dz * dz);
-        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
-        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
-        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
-        return g;
-    };
-    const double half = m.size_m * 0.5;
-    const ScatterArea area{{ts.origin.x - half, ts.origin.z - half}, {ts.origin.x + half, ts.origin.z + half}};
-    if (!objects_->prepare(s.objects, ground, area, [](const std::string& f) { return resolveInput(f); }, errors))
-        objects_.release();
+        const glm::dvec3 origin = s.terrain.origin;
+        const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+        const auto resolve = [](const std::string& f) { return resolveInput(f); };
+        if (!objects_->place(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), resolve, errors)) {
+            objects_.release();
+            return;
+        }
+    }
+    objects_->setEmissive(s.objects.emissive_nits);
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {

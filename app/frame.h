@@ -255,6 +255,7 @@ private:
     FeatureSlot<Weather> weather_{"weather.memory_bytes"};  // empty while [weather] is off (keeps the last camera for streaks)
     FeatureSlot<Water> water_{"water.memory_bytes"};  // empty while [water] is off (no buffers)
     FeatureSlot<Objects> objects_{"objects.memory_bytes"};  // empty while [objects] places nothing (no buffers)
+    ObjectsSettings objects_placed_for_;  // the lists objects_ was placed from (while it exists)
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
     FeatureSlot<TemporalAA> taa_{nullptr};  // empty while [postfx.taa] is off (its bytes count as postfx's)
