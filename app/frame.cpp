@@ -15,6 +15,7 @@
 #include "config/ini.h"
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
+#include "renderer/shadows/shadow_view.h"
 #include "sky/atmosphere.h"
 #include "sky/day_cycle.h"
 #include "sky/night_light.h"

@@ -3,6 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
+#include "renderer/shadows/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,22 +12,6 @@
 #include <cmath>
 
 namespace vista {
-namespace {
-#include "renderer/shadows/shaders/shadow_view_block.glsl"
-}  // namespace
-
-void PointShadowInput::bind(GLuint texture) const {
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, uniforms);
-    glBindTextureUnit(binding::kPointShadowMap, texture);
-    glBindSampler(binding::kPointShadowMap, compare_sampler);
-    glBindTextureUnit(binding::kPointShadowDepth, texture);
-    glBindSampler(binding::kPointShadowDepth, depth_sampler);
-}
-
-void PointShadowInput::unbind() {
-    glBindSampler(binding::kPointShadowMap, 0);
-    glBindSampler(binding::kPointShadowDepth, 0);
-}
 
 namespace {
 
@@ -106,14 +91,7 @@ void PointShadows::allocate(int resolution, int cubes) {
     cube_count_ = cubes;
     fb_ = gl::createFramebuffer("point shadow face");
     glNamedFramebufferDrawBuffer(fb_.id(), GL_NONE);
-    if (!uniforms_)
-        uniforms_ = gl::Buffer::create(sizeof(PointShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "point shadow uniforms");
-    if (!compare_) {
-        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "point shadow compare");
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);  // reversed-Z: nearer is larger
-        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "point shadow depth");
-    }
+    objects_.create(sizeof(PointShadowUniforms), GL_GEQUAL, "point shadow");
 }
 
 PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
@@ -148,7 +126,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
     u.params = glm::vec4(float(int(s.spot_filter)), float(s.spot_taps), float(s.point_resolution), s.spot_max_penumbra_texels);
     u.bias = glm::vec4(s.point_normal_offset_texels, s.point_depth_bias_texels, s.spot_filter_radius_texels,
                        s.spot_light_size_m);
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glNamedBufferSubData(objects_.uniforms.id(), 0, sizeof u, &u);
 
     TextureHandle cubes_handle = graph.importTexture(
         "shadows.point_cubes", {s.point_resolution, s.point_resolution, PixelFormat::Depth32F}, cubes_.id());
@@ -209,33 +187,13 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDisable(GL_POLYGON_OFFSET_FILL);
             glDisable(GL_DEPTH_TEST);
         });
-    return {d.cubes, uniforms_.id(), compare_.id(), depth_.id()};
+    return {d.cubes, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id()};
 }
 
 TextureHandle addPointShadowViewPass(FrameGraph& graph, const RenderContext& rc, const PointShadowInput& shadows,
                                      int cubes) {
-    struct Data {
-        TextureHandle cubes, out;
-    };
-    const Data& d = graph.addPass<Data>("shadows.point_view",
-        [&](PassBuilder& b, Data& data) {
-            if (shadows.valid()) data.cubes = b.read(shadows.cubes);
-            data.out = b.write(b.create("shadows.point_view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
-        },
-        [&rc, shadows, cubes](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.id("renderer/shadows/shaders/point_shadow_view.glsl");
-            glUseProgram(program);
-            bindPassBlock(rc, program, ShadowViewBlock{{data.cubes.valid() ? cubes : 0, 0, 0, 0}});
-            if (data.cubes.valid()) {
-                glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.cubes));
-                glBindSampler(binding::kPointShadowDepth, shadows.depth_sampler);
-            }
-            drawFullscreen(rc);
-            glBindSampler(binding::kPointShadowDepth, 0);
-        });
-    return d.out;
+    return addShadowViewPass(graph, rc, {"shadows.point_view", "renderer/shadows/shaders/point_shadow_view.glsl",
+                                         shadows.cubes, shadows.depth_sampler, binding::kPointShadowDepth, {cubes, 0, 0, 0}});
 }
 
 }  // namespace vista

@@ -20,6 +20,7 @@
 #include "renderer/camera.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
+#include "renderer/shadows/shadow_binding.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
 #include "renderer/shadows/terrain_caster.h"
@@ -59,8 +60,10 @@ struct PointShadowInput {
     bool valid() const { return cubes.valid(); }
     // Binds the uniforms and the cubes (this pass's texture of `cubes`) with both samplers at the
     // kPointShadow* bindings lights.glsl reads (HAS_POINT_SHADOWS); unbind() takes the samplers off again.
-    void bind(GLuint texture) const;
-    static void unbind();
+    void bind(GLuint texture) const {
+        bindShadowInput(kPointShadowBindings, uniforms, texture, compare_sampler, depth_sampler);
+    }
+    static void unbind() { unbindShadowInput(kPointShadowBindings); }
 };
 
 struct PointShadowStats {
@@ -91,7 +94,7 @@ public:
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const PointShadowStats& stats() const { return stats_; }
     // GPU bytes held across frames: the cubes (kept once drawn) and the uniforms.
-    std::size_t memoryBytes() const { return cubes_.bytes() + std::size_t(uniforms_.size()); }
+    std::size_t memoryBytes() const { return cubes_.bytes() + objects_.bytes(); }
     int cubes() const { return cube_count_; }  // cubes allocated (point_max_lights)
 
 private:
@@ -110,8 +113,7 @@ private:
     gl::Texture cubes_;
     int resolution_ = 0, cube_count_ = 0;
     gl::Framebuffer fb_;
-    gl::Buffer uniforms_;
-    gl::Sampler compare_, depth_;
+    ShadowReadObjects objects_;
 };
 
 // "shadows.point_view": each shadowed light's cube as a row of its six faces in grey levels (near

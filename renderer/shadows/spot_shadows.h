@@ -24,6 +24,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/lights.h"
 #include "renderer/render_context.h"
+#include "renderer/shadows/shadow_binding.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
 #include "renderer/shadows/terrain_caster.h"
@@ -80,8 +81,10 @@ struct SpotShadowInput {
     bool valid() const { return atlas.valid(); }
     // Binds the uniforms and the atlas (this pass's texture of `atlas`) with both samplers at the
     // kSpotShadow* bindings lights.glsl reads (HAS_SPOT_SHADOWS); unbind() takes the samplers off again.
-    void bind(GLuint texture) const;
-    static void unbind();
+    void bind(GLuint texture) const {
+        bindShadowInput(kSpotShadowBindings, uniforms, texture, compare_sampler, depth_sampler);
+    }
+    static void unbind() { unbindShadowInput(kSpotShadowBindings); }
 };
 
 struct SpotShadowStats {
@@ -112,7 +115,7 @@ public:
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const SpotShadowStats& stats() const { return stats_; }
     // GPU bytes held across frames: the atlas (kept once drawn) and the uniforms.
-    std::size_t memoryBytes() const { return atlas_.bytes() + std::size_t(uniforms_.size()); }
+    std::size_t memoryBytes() const { return atlas_.bytes() + objects_.bytes(); }
     GLuint atlasTexture() const { return atlas_.id(); }
     int tilesPerSide() const { return tiles_per_side_; }
 
@@ -133,8 +136,7 @@ private:
     gl::Texture atlas_;
     int atlas_resolution_ = 0;
     gl::Framebuffer atlas_fb_;
-    gl::Buffer uniforms_;
-    gl::Sampler compare_, depth_;
+    ShadowReadObjects objects_;
 };
 
 // "shadows.spot_view": the atlas's tiles as grey levels (near the light bright), for

@@ -3,6 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
+#include "renderer/shadows/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -13,9 +14,6 @@
 #include <limits>
 
 namespace vista {
-namespace {
-#include "renderer/shadows/shaders/shadow_view_block.glsl"
-}  // namespace
 
 namespace {
 
@@ -29,19 +27,6 @@ struct ShadowUniforms {
 };
 
 }  // namespace
-
-void SunShadowInput::bind(GLuint map_texture) const {
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, uniforms);
-    glBindTextureUnit(binding::kShadowMap, map_texture);
-    glBindSampler(binding::kShadowMap, compare_sampler);
-    glBindTextureUnit(binding::kShadowDepth, map_texture);
-    glBindSampler(binding::kShadowDepth, depth_sampler);
-}
-
-void SunShadowInput::unbind() {
-    glBindSampler(binding::kShadowMap, 0);
-    glBindSampler(binding::kShadowDepth, 0);
-}
 
 bool sunCastsShadows(const ShadowSettings& s, const glm::dvec3& sun_dir) {
     return s.enabled && sun_dir.y > std::sin(glm::radians(double(s.min_sun_elevation_deg))) && sun_dir.y > 0.0;
@@ -130,14 +115,7 @@ void SunShadows::allocate(int resolution, int layers) {
         glNamedFramebufferTextureLayer(layer_fbs_.back().id(), GL_DEPTH_ATTACHMENT, id, 0, i);
         glNamedFramebufferDrawBuffer(layer_fbs_.back().id(), GL_NONE);
     }
-    if (!uniforms_)
-        uniforms_ = gl::Buffer::create(sizeof(ShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "shadow uniforms");
-    if (!compare_) {
-        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "shadow compare");
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "shadow depth");
-    }
+    objects_.create(sizeof(ShadowUniforms), GL_LEQUAL, "shadow");
 }
 
 SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
@@ -214,7 +192,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     allocate(s.resolution, count);
     u.params = glm::vec4(float(count), s.blend_band, float(s.pcf_taps), float(int(s.filter)));
     u.bias = glm::vec4(s.normal_offset_texels, s.depth_bias_texels, tan_sun_radius_, s.max_penumbra_texels);
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glNamedBufferSubData(objects_.uniforms.id(), 0, sizeof u, &u);
     stats_.memory_bytes = std::size_t(s.resolution) * std::size_t(s.resolution) * 4u * std::size_t(count) + sizeof u;
 
     TextureHandle map = graph.importTexture("shadows.map", {s.resolution, s.resolution, PixelFormat::Depth32F}, map_.id());
@@ -262,38 +240,13 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     unsigned drawn = 0;
     for (int i = 0; i < count; ++i)
         if (u.info[i].x != 0.0f) drawn |= 1u << i;
-    return {map, uniforms_.id(), compare_.id(), depth_.id(), drawn};
+    return {map, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id(), drawn};
 }
 
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
                                    int cascades) {
-    struct Data {
-        TextureHandle map, out;
-    };
-    const Data& d = graph.addPass<Data>("shadows.view",
-        [&](PassBuilder& b, Data& data) {
-            if (shadows.valid()) data.map = b.read(shadows.map);
-            data.out = b.write(b.create("shadows.view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
-        },
-        [&rc, shadows, cascades](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.id("renderer/shadows/shaders/shadow_view.glsl");
-            glUseProgram(program);
-            bindPassBlock(rc, program, ShadowViewBlock{{data.map.valid() ? cascades : 0, int(shadows.drawn), 0, 0}});
-            if (data.map.valid()) {
-                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.map));
-                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
-            }
-            drawFullscreen(rc);
-            glBindSampler(binding::kShadowDepth, 0);
-        });
-    return d.out;
-}
-
-ProgramList shadowPrograms() {
-    return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}},
-            {"renderer/shadows/shaders/point_shadow_view.glsl", {}}};
+    return addShadowViewPass(graph, rc, {"shadows.view", "renderer/shadows/shaders/shadow_view.glsl", shadows.map,
+                                         shadows.depth_sampler, binding::kShadowDepth, {cascades, int(shadows.drawn), 0, 0}});
 }
 
 }  // namespace vista
