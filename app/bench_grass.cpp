@@ -2,6 +2,7 @@
 // milliseconds and reference copies measured in the same run.
 #include "app/bench_grass.h"
 
+#include "app/bench_start.h"
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
@@ -14,12 +15,10 @@ namespace vista {
 
 int runBenchGrass(const BenchScene& isolated, const BenchGrassOptions& o) {
     const Settings& scene = isolated.settings;
-    std::printf("%s", isolated.summary().c_str());
-    std::string error;
-    auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
-    if (!context) return fail(1, error);
-    FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return fail(1, "shader compilation failed:\n" + error);
+    BenchRenderer bench;
+    if (const int failed = startBench(isolated, o.backend, o.width, o.height, bench)) return failed;
+    FrameRenderer& renderer = *bench.renderer;
+    const GlContext& context = *bench.context;
 
     Settings s = scene;
     s.terrain.enabled = true;
@@ -72,7 +71,7 @@ int runBenchGrass(const BenchScene& isolated, const BenchGrassOptions& o) {
                         {"memory_bytes", renderer.grass() ? renderer.grass()->memoryBytes() : 0}});
     }
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    nlohmann::json out = {{"renderer", context->renderer()},
+    nlohmann::json out = {{"renderer", context.renderer()},
                           {"backend", backendName(o.backend)},
                           {"size", {o.width, o.height}},
                           {"radius_m", s.grass.radius_m},

@@ -3,6 +3,7 @@
 #include "app/bench_lights.h"
 
 #include "app/chart.h"
+#include "app/bench_start.h"
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
@@ -184,12 +185,10 @@ std::vector<std::string> benchLightsSweeps() { return {std::begin(kSweeps), std:
 
 int runBenchLights(const BenchScene& isolated, const BenchLightsOptions& o) {
     const Settings& scene = isolated.settings;
-    std::printf("%s", isolated.summary().c_str());
-    std::string error;
-    auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
-    if (!context) return fail(1, error);
-    FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return fail(1, "shader compilation failed:\n" + error);
+    BenchRenderer bench;
+    if (const int failed = startBench(isolated, o.backend, o.width, o.height, bench)) return failed;
+    FrameRenderer& renderer = *bench.renderer;
+    const GlContext& context = *bench.context;
 
     // A generated island (4 m texels) seen from its south, 150 m up, looking north and down.
     Settings s = scene;
@@ -475,7 +474,7 @@ int runBenchLights(const BenchScene& isolated, const BenchLightsOptions& o) {
     }
 
     std::printf("\nreference_copy_ms %.4f  size %dx%d  tile %d px  renderer %s\n", copy_ms, o.width, o.height,
-                tilePixels(default_tile), context->renderer().c_str());
+                tilePixels(default_tile), context.renderer().c_str());
     for (const std::string& f : chart_files) std::printf("chart: %s\n", f.c_str());
     if (!chart_problem.empty()) std::fprintf(stderr, "vista: bench lights: chart not written: %s\n", chart_problem.c_str());
     if (!o.json.empty()) {
@@ -488,7 +487,7 @@ int runBenchLights(const BenchScene& isolated, const BenchLightsOptions& o) {
                               {"tile_px", tilePixels(default_tile)},
                               {"radius_m", o.radius_m},
                               {"sweep_lights", o.sweep_lights},
-                              {"renderer", context->renderer()},
+                              {"renderer", context.renderer()},
                               {"backend", backendName(o.backend)}};
         out["scene"] = isolated.json();
         std::string problem = writeFileAtomic(o.json, out.dump(2) + "\n", o.force);

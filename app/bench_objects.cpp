@@ -3,6 +3,7 @@
 // in ms and reference copies beside terrain.gbuffer, measured in the same run.
 #include "app/bench_objects.h"
 
+#include "app/bench_start.h"
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
@@ -15,12 +16,10 @@
 namespace vista {
 
 int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
-    std::printf("%s", isolated.summary().c_str());
-    std::string error;
-    auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
-    if (!context) return fail(1, error);
-    FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return fail(1, "shader compilation failed:\n" + error);
+    BenchRenderer bench;
+    if (const int failed = startBench(isolated, o.backend, o.width, o.height, bench)) return failed;
+    FrameRenderer& renderer = *bench.renderer;
+    const GlContext& context = *bench.context;
 
     Settings s = isolated.settings;
     s.terrain.enabled = true;
@@ -102,7 +101,7 @@ int runBenchObjects(const BenchScene& isolated, const BenchObjectsOptions& o) {
                         {"cpu_ms", median(cpu)}});
     }
     std::printf("reference_copy_ms %.4f\n", copy_ms);
-    nlohmann::json out = {{"renderer", context->renderer()},
+    nlohmann::json out = {{"renderer", context.renderer()},
                           {"backend", backendName(o.backend)},
                           {"size", {o.width, o.height}},
                           {"reference_copy_ms", copy_ms},

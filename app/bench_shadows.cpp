@@ -2,6 +2,7 @@
 // which leaves the sun's visibility (0..1) in the HDR target where lighting.sun wrote it.
 #include "app/bench_shadows.h"
 
+#include "app/bench_start.h"
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
@@ -207,14 +208,10 @@ nlohmann::json spotBench(FrameRenderer& r, const Settings& base, int width, int 
 
 int runBenchShadows(const BenchScene& isolated, const BenchShadowsOptions& o) {
     const Settings& scene = isolated.settings;
-    std::printf("%s", isolated.summary().c_str());
-    std::string error;
-    auto context = createContext(o.backend, ContextOptions{o.width, o.height, false, false, false, false, "bench"}, error);
-    if (!context) {
-        std::fprintf(stderr, "vista: %s\n", error.c_str());
-        return 1;
-    }
-    FrameRenderer renderer(vistaRoot());
+    BenchRenderer bench;
+    if (const int failed = startBench(isolated, o.backend, o.width, o.height, bench, /*compile_all=*/false)) return failed;
+    FrameRenderer& renderer = *bench.renderer;
+    const GlContext& context = *bench.context;
     Settings base = scene;
     base.debug.grid = false;
     base.debug.view = DebugView::Shadow;
@@ -228,7 +225,7 @@ int runBenchShadows(const BenchScene& isolated, const BenchShadowsOptions& o) {
         std::fprintf(stderr, "vista: bench shadows needs the scene's terrain: %s\n", errors.empty() ? "[terrain] is off" : errors.front().str().c_str());
         return 2;
     }
-    nlohmann::json out = {{"renderer", context->renderer()}, {"backend", backendName(o.backend)}, {"size", {o.width, o.height}}};
+    nlohmann::json out = {{"renderer", context.renderer()}, {"backend", backendName(o.backend)}, {"size", {o.width, o.height}}};
     const double copy_ms = renderer.measureReferenceCopy(o.width, o.height);
     out["reference_copy_ms"] = copy_ms;
 

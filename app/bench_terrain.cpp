@@ -1,6 +1,7 @@
 // Terrain benchmark: everything measured in one run, GPU cost also in reference copies.
 #include "app/bench_terrain.h"
 
+#include "app/bench_start.h"
 #include "app/frame.h"
 #include "app/scene.h"
 #include "app/stats.h"
@@ -57,13 +58,11 @@ double maxErrorPx(FrameRenderer& renderer, Settings s, const ViewParams& view) {
 
 int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
     const Settings& scene = isolated.settings;
-    std::printf("%s", isolated.summary().c_str());
     const int width = o.width, height = o.height;
-    std::string error;
-    auto context = createContext(o.backend, ContextOptions{width, height, false, false, false, false, "bench"}, error);
-    if (!context) return fail(1, error);
-    FrameRenderer renderer(vistaRoot());
-    if (!renderer.compilePrograms(error)) return fail(1, "shader compilation failed:\n" + error);
+    BenchRenderer bench;
+    if (const int failed = startBench(isolated, o.backend, o.width, o.height, bench)) return failed;
+    FrameRenderer& renderer = *bench.renderer;
+    const GlContext& context = *bench.context;
 
     Settings s = scene;
     s.terrain.enabled = true;
@@ -154,7 +153,7 @@ int runBenchTerrain(const BenchScene& isolated, const BenchTerrainOptions& o) {
         {"reference_copy_ms", stats.reference_copy_ms},
         {"terrain_copies", stats.reference_copy_ms > 0 ? gpu / stats.reference_copy_ms : 0.0},
         {"viewport", {width, height}},
-        {"renderer", context->renderer()},
+        {"renderer", context.renderer()},
         {"backend", backendName(o.backend)},
         {"heightmap_seconds", prepare_s},
         {"load_seconds", load_s},

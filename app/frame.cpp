@@ -15,6 +15,7 @@
 #include "config/ini.h"
 #include "renderer/lighting/deferred.h"
 #include "renderer/lighting/local_lights.h"
+#include "renderer/shadows/shadow_view.h"
 #include "sky/atmosphere.h"
 #include "sky/day_cycle.h"
 #include "sky/night_light.h"
@@ -24,6 +25,7 @@
 #include "sky/weather/weather.h"
 #include "sky/weather/weather_model.h"
 #include "terrain/material_weights.h"
+#include "terrain/scatter/scatter.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -32,6 +34,29 @@
 #include <limits>
 
 namespace vista {
+
+namespace {
+
+// The ground under a point for the placement of objects: height, slope from central differences
+// over 1 m, and the terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
+GroundFunction terrainGround(const Terrain& terrain, const TerrainSettings& ts) {
+    return [t = &terrain, ts, m = terrain.mapping()](double x, double z) {
+        GroundSample g;
+        const double half = m.size_m * 0.5;
+        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
+        g.valid = true;
+        g.height_m = t->heightAt(x, z);
+        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
+        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
+        g.slope = std::sqrt(dx * dx + dz * dz);
+        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
+        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
+        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
+        return g;
+    };
+}
+
+}  // namespace
 
 ProgramList allPrograms() {
     ProgramList programs = {
@@ -115,30 +140,20 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
         objects_.release();  // nothing placed: no object, no buffers
         return;
     }
-    objects_.use();
-    const Terrain* t = terrain_.get();
-    const TerrainSettings ts = s.terrain;
-    const TerrainMapping& m = t->mapping();
-    // The ground under a point: height, slope from central differences over 1 m, and the
-    // terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
-    GroundFunction ground = [t, ts, m](double x, double z) {
-        GroundSample g;
+    if (!objects_ || !samePlacement(s.objects, objects_placed_for_)) {
+        objects_.use();
+        objects_placed_for_ = s.objects;
+        const TerrainMapping& m = terrain_->mapping();
         const double half = m.size_m * 0.5;
-        if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
-        g.valid = true;
-        g.height_m = t->heightAt(x, z);
-        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
-        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
-        g.slope = std::sqrt(dx * dx + dz * dz);
-        const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
-        const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
-        g.grass = material::grassAt(h, normal_y, {ts.sand_top, ts.grass_top, ts.snow_start, ts.band_blend}, ts.rock_slope);
-        return g;
-    };
-    const double half = m.size_m * 0.5;
-    const ScatterArea area{{ts.origin.x - half, ts.origin.z - half}, {ts.origin.x + half, ts.origin.z + half}};
-    if (!objects_->prepare(s.objects, ground, area, [](const std::string& f) { return resolveInput(f); }, errors))
-        objects_.release();
+        const glm::dvec3 origin = s.terrain.origin;
+        const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+        const auto resolve = [](const std::string& f) { return resolveInput(f); };
+        if (!objects_->place(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), resolve, errors)) {
+            objects_.release();
+            return;
+        }
+    }
+    objects_->setEmissive(s.objects.emissive_nits);
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
@@ -333,7 +348,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     // One selection covers the view and every caster of its shadows (one LOD for both).
     const Frustum casters = sun_shadows_->casterFrustum(view_proj);
     terrain_->select(rc.view.position, view_proj, s.terrain, error_scale, &casters, spots);
-    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, terrain_.get(), s.terrain, extra,
+    SunShadowInput shadows = sun_shadows_->addPasses(graph, rc, &terrain_caster_, extra,
                                                      lowestReceiver(*terrain_, s, objects_.get()));
     const SunShadowStats& st = sun_shadows_->stats();
     report.counters["shadows.cascades"] = double(st.cascades);
@@ -387,7 +402,7 @@ bool FrameRenderer::preparePointShadows(const RenderContext& rc, const Settings&
 
 PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                                    const ShadowCaster& extra, FrameReport& report) {
-    PointShadowInput input = point_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    PointShadowInput input = point_shadows_->addPass(graph, rc, &terrain_caster_, extra);
     local_lights_->setPointShadowSlots(*point_shadows_);
     reportShadowedLights(report, "shadows.point_", point_shadows_->stats());
     return input;
@@ -395,7 +410,7 @@ PointShadowInput FrameRenderer::addPointShadowPass(FrameGraph& graph, const Rend
 
 SpotShadowInput FrameRenderer::addSpotShadowPass(FrameGraph& graph, const RenderContext& rc, const Settings& s,
                                                  const ShadowCaster& extra, FrameReport& report) {
-    SpotShadowInput input = spot_shadows_->addPass(graph, rc, terrain_.get(), s.terrain, extra);
+    SpotShadowInput input = spot_shadows_->addPass(graph, rc, &terrain_caster_, extra);
     local_lights_->setShadowSlots(*spot_shadows_);
     reportShadowedLights(report, "shadows.spot_", spot_shadows_->stats());
     return input;
@@ -584,6 +599,7 @@ FrameRenderer::Shadows FrameRenderer::addShadowPasses(FrameGraph& graph, const F
                                                       const FrameRequest& request, FrameReport& report) {
     Shadows shadows;
     if (!f.terrain) return shadows;
+    terrain_caster_.bind(*terrain_, f.s.terrain);  // what the shadow passes draw of the terrain, this frame
     shadows.sun = addTerrainAndShadowPasses(graph, f.rc, f.s, request.shadow_fit_view, report, casters.caster);
     if (spot_shadows_) shadows.spot = addSpotShadowPass(graph, f.rc, f.s, casters.caster, report);
     if (point_shadows_) shadows.point = addPointShadowPass(graph, f.rc, f.s, casters.caster, report);

@@ -26,6 +26,7 @@
 #include "sky/sky_lighting.h"
 #include "sky/weather/weather.h"
 #include "terrain/terrain.h"
+#include "terrain/terrain_caster.h"
 #include "terrain/water/water.h"
 
 #include <cstdint>
@@ -239,6 +240,7 @@ private:
     gl::Buffer frame_uniforms_;
     std::uint64_t frame_ = 0;
     FeatureSlot<Terrain> terrain_{"terrain.memory_bytes"};
+    TerrainShadowCaster terrain_caster_;  // the terrain as the shadow passes draw it (bound each frame)
     FeatureSlot<SkyAtmosphere> sky_{"sky.memory_bytes"};  // LUTs kept across frames
     FeatureSlot<Clouds> clouds_{"clouds.memory_bytes"};  // empty while [clouds] draws nothing
     FeatureSlot<LocalLights> local_lights_{"lights.memory_bytes"};  // empty while the scene has no local lights
@@ -253,6 +255,7 @@ private:
     FeatureSlot<Weather> weather_{"weather.memory_bytes"};  // empty while [weather] is off (keeps the last camera for streaks)
     FeatureSlot<Water> water_{"water.memory_bytes"};  // empty while [water] is off (no buffers)
     FeatureSlot<Objects> objects_{"objects.memory_bytes"};  // empty while [objects] places nothing (no buffers)
+    ObjectsSettings objects_placed_for_;  // the lists objects_ was placed from (while it exists)
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
     FeatureSlot<TemporalAA> taa_{nullptr};  // empty while [postfx.taa] is off (its bytes count as postfx's)

@@ -123,4 +123,53 @@ TextureHandle addFullscreenPass(FrameGraph& graph, const RenderContext& rc, Full
     return detail::addFullscreenPass(graph, rc, std::move(pass), nullptr);
 }
 
+void addGbufferDrawPass(FrameGraph& graph, const RenderContext& rc, std::string name, BufferHandle lists,
+                        SceneTargets& targets, std::function<void()> draw, std::function<void()> before) {
+    struct Data {
+        BufferHandle lists;
+        SceneTargets t;
+    };
+    const Data& d = graph.addPass<Data>(std::move(name),
+        [&](PassBuilder& b, Data& data) {
+            data.lists = b.read(lists);
+            data.t = targets;
+            data.t.hdr = b.write(targets.hdr);
+            data.t.albedo = b.write(targets.albedo);
+            data.t.normal = b.write(targets.normal);
+            data.t.depth = b.write(targets.depth);
+        },
+        [&rc, draw = std::move(draw), before = std::move(before)](const Data& data, PassContext& ctx) {
+            if (before) before();
+            const TextureDesc& desc = ctx.desc(data.t.hdr);
+            GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
+                                              ctx.texture(data.t.depth));
+            bindTarget(fb, desc.width, desc.height);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_TRUE);
+            draw();
+            glDisable(GL_DEPTH_TEST);
+        });
+    targets = d.t;
+}
+
+void addOverHdrPass(FrameGraph& graph, const RenderContext& rc, std::string name, SceneTargets& targets,
+                    std::function<void()> draw) {
+    struct Data {
+        TextureHandle depth, hdr;
+    };
+    const Data& d = graph.addPass<Data>(std::move(name),
+        [&](PassBuilder& b, Data& data) {
+            data.depth = b.read(targets.depth);
+            data.hdr = b.write(targets.hdr);
+        },
+        [&rc, draw = std::move(draw)](const Data& data, PassContext& ctx) {
+            const TextureDesc& desc = ctx.desc(data.hdr);
+            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
+            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
+            draw();
+        });
+    targets.hdr = d.hdr;
+}
+
 }  // namespace vista

@@ -9,6 +9,7 @@
 #include "renderer/frame_graph.h"
 #include "renderer/program_key.h"
 #include "renderer/render_context.h"
+#include "renderer/scene_targets.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -142,5 +143,18 @@ std::vector<BufferHandle> addComputePass(FrameGraph& graph, const RenderContext&
         [block](const RenderContext& rc, GLuint program, const TextureDesc&) { bindPassBlock(rc, program, block); });
 }
 std::vector<BufferHandle> addComputePass(FrameGraph& graph, const RenderContext& rc, ComputePass pass);
+
+// Opaque geometry into the G-buffer (grass.gbuffer, objects.gbuffer): the pass reads `lists` (the
+// culled lists it draws, so it follows their pass) and writes targets' hdr, albedo, normal and
+// depth. before() runs first (work that binds a target of its own); then the three colour targets
+// and depth are bound, depth tested GREATER and written, and draw() draws; the test is off after.
+void addGbufferDrawPass(FrameGraph& graph, const RenderContext& rc, std::string name, BufferHandle lists,
+                        SceneTargets& targets, std::function<void()> draw, std::function<void()> before = {});
+
+// A pass drawn over targets.hdr where it is (lights.glow, water.underwater), reading targets.depth
+// at texture unit 0: hdr is bound alone when draw() runs, which sets its program, inputs and
+// blending and puts the blending back. Returns nothing: targets.hdr becomes the pass's.
+void addOverHdrPass(FrameGraph& graph, const RenderContext& rc, std::string name, SceneTargets& targets,
+                    std::function<void()> draw);
 
 }  // namespace vista

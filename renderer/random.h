@@ -23,6 +23,18 @@ inline std::uint64_t hashIndex(std::uint64_t seed, std::uint64_t index) {
     return splitmix64(state);
 }
 
+// A 32-bit hash of up to four integers (cells, candidates, seeds): a multiply-xor mix, then
+// lowbias32's finaliser. terrain/grass/shaders/grass_common.glsl's grassHash is the same of three.
+inline std::uint32_t hashInts(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d = 0) {
+    std::uint32_t h = a * 0x8da6b343u ^ b * 0xd8163841u ^ c * 0xcb1ab31fu ^ d * 0x165667b1u;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return h;
+}
+
 class Rng {
 public:
     explicit Rng(std::uint64_t seed) : state_(seed) {}

@@ -8,6 +8,7 @@
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
+#include "renderer/shadows/terrain_caster.h"  // TerrainInstance
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
 #include "terrain/terrain_settings.h"
@@ -37,12 +38,6 @@ struct TerrainCounters {
     std::int64_t tess_patches = 0;  // grid triangles drawn as tessellation patches ([terrain.tessellation])
     std::int64_t tess_shadow_patches = 0;  // the same in shadow passes (sun cascades, spot tiles, point cube faces)
     StreamCounters stream;  // [terrain.stream]: tiles resident, requested, loaded, evicted, missing (zero when not streaming)
-};
-
-// One quadrant of a node at its LOD level: what the shader draws per instance.
-struct TerrainInstance {
-    glm::vec4 a;  // camera-relative x, z of the min corner (m), grid step in x (m), level
-    glm::vec4 b;  // morph constants of the level, grid step in z (m), unused
 };
 
 // How the heightmap is split into texture-array layers: tile (i, j) is layer j * count.x + i
@@ -138,7 +133,7 @@ public:
     // (camera-relative world -> the shadow view's clip) into slot 0..kShadowSlots-1 of the shadow
     // instance buffer (made on first use); the first `tess` of them (shadowInstances()) as patches
     // with terrain_tess.glsl's shadow program.
-    static constexpr int kShadowSlots = 8;
+    static constexpr int kShadowSlots = TerrainCaster::kSlots;
     void drawShadow(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
                     const std::vector<TerrainInstance>& instances, std::size_t tess, int slot);
     // Draws several instance lists depth-only (spot shadow tiles, point cube faces): all are

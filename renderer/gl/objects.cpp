@@ -104,4 +104,11 @@ Sampler createSampler(GLenum min_filter, GLenum mag_filter, GLenum wrap, std::st
     return sampler;
 }
 
+Sampler createCompareSampler(GLenum func, std::string_view name) {
+    Sampler sampler = createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, name);
+    glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(sampler.id(), GL_TEXTURE_COMPARE_FUNC, GLint(func));
+    return sampler;
+}
+
 }  // namespace vista::gl

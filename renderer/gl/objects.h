@@ -123,5 +123,7 @@ Framebuffer createFramebuffer(std::string_view name);
 VertexArray createVertexArray(std::string_view name);
 Query createQuery(GLenum target);
 Sampler createSampler(GLenum min_filter, GLenum mag_filter, GLenum wrap, std::string_view name);
+// A bilinear, edge-clamped depth sampler that compares the reference with `func` (shadow lookups).
+Sampler createCompareSampler(GLenum func, std::string_view name);
 
 }  // namespace vista::gl

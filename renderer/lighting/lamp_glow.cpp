@@ -3,6 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/lighting/local_lights.h"
+#include "renderer/pass_kit.h"
 #include "sky/atmosphere.h"
 #include "sky/atmosphere_model.h"
 #include "sky/sky_settings.h"
@@ -185,28 +186,16 @@ bool LampGlow::prepare(std::span<const Light> lights, const LightsSettings& s, c
 }
 
 void LampGlow::addPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets) {
-    struct Data {
-        TextureHandle depth, hdr;
-    };
-    const Data& d = graph.addPass<Data>("lights.glow",
-        [&](PassBuilder& b, Data& data) {
-            data.depth = b.read(targets.depth);
-            data.hdr = b.write(targets.hdr);
-        },
-        [this, &rc](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.hdr);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id(kGlowProgram));
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, lights_buf_.id());
-            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
-            glBindTextureUnit(binding::kTex1, table_.id());
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_ONE, GL_ONE);  // in-scattered light adds to what is behind
-            glBindVertexArray(rc.empty_vao);
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(lights_.size()));  // a quad per light
-            glDisable(GL_BLEND);
-        });
-    targets.hdr = d.hdr;
+    addOverHdrPass(graph, rc, "lights.glow", targets, [this, &rc] {
+        glUseProgram(rc.shaders.id(kGlowProgram));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, lights_buf_.id());
+        glBindTextureUnit(binding::kTex1, table_.id());
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);  // in-scattered light adds to what is behind
+        glBindVertexArray(rc.empty_vao);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(lights_.size()));  // a quad per light
+        glDisable(GL_BLEND);
+    });
 }
 
 std::size_t LampGlow::gpuMemoryBytes() const { return table_.bytes() + std::size_t(lights_buf_.size()); }

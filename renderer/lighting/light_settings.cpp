@@ -3,81 +3,18 @@
 // an error with a reason rather than a silently different light.
 #include "renderer/lighting/light_settings.h"
 
+#include "config/spec_text.h"
+
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace vista {
 namespace {
 
 constexpr double kMaxCoord = 1e8;  // m
 
-std::vector<std::string_view> tokens(std::string_view text) {
-    std::vector<std::string_view> out;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-        std::size_t j = i;
-        while (j < text.size() && text[j] != ' ' && text[j] != '\t') ++j;
-        if (j > i) out.push_back(text.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
-
-bool toDouble(std::string_view t, double& v) {
-    if (!t.empty() && t.front() == '+') t.remove_prefix(1);  // from_chars rejects a leading '+'
-    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v);
-}
-
-std::string str(double v) {
-    char buf[32];
-    return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
-}
-std::string str(float v) {
-    char buf[32];
-    return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
-}
-
-// A range bound for people to read, as the ini loader writes ranges: 100000 rather than 1e+05.
-std::string bound(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-// Reads the numbers of one keyword group, checking each against [lo, hi].
-class Reader {
-public:
-    explicit Reader(std::string_view text) : t_(tokens(text)) {}
-    bool done() const { return i_ >= t_.size(); }
-    std::string_view word() { return i_ < t_.size() ? t_[i_++] : std::string_view(); }
-    std::string_view peek() const { return i_ < t_.size() ? t_[i_] : std::string_view(); }
-    bool numbers(std::string_view what, double* out, int n, double lo, double hi, std::string& error) {
-        for (int k = 0; k < n; ++k) {
-            if (i_ >= t_.size()) {
-                error = std::string(what) + " needs " + std::to_string(n) + " numbers";
-                return false;
-            }
-            std::string_view tok = t_[i_++];
-            if (!toDouble(tok, out[k])) {
-                error = std::string(what) + ": '" + std::string(tok) + "' is not a number";
-                return false;
-            }
-            if (out[k] < lo || out[k] > hi) {
-                error = std::string(what) + ": " + std::string(tok) + " is outside [" + bound(lo) + ", " + bound(hi) + "]";
-                return false;
-            }
-        }
-        return true;
-    }
-
-private:
-    std::vector<std::string_view> t_;
-    std::size_t i_ = 0;
-};
+using spec::Reader;
+using spec::str;
 
 constexpr double kMaxPhotometric = 1e9;  // cd or lm
 constexpr std::array<const char*, 3> kUnitNames{"intensity", "candela", "lumens"};  // LightUnit's order

@@ -2,6 +2,7 @@
 #include "renderer/meshes/gen_props.h"
 
 #include "config/file_io.h"
+#include "renderer/random.h"
 
 #include <tiny_gltf.h>
 
@@ -21,20 +22,10 @@
 namespace vista {
 namespace {
 
-std::uint32_t hash3(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    std::uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
-
 // A deterministic stream of numbers in [0, 1).
 struct Random {
     std::uint32_t seed, n = 0;
-    float next() { return float(hash3(seed, n++, 0x51ed27u) >> 8) * (1.0f / 16777216.0f); }
+    float next() { return float(hashInts(seed, n++, 0x51ed27u) >> 8) * (1.0f / 16777216.0f); }
     float range(float a, float b) { return a + (b - a) * next(); }
 };
 
@@ -178,7 +169,7 @@ ModelImage leafTexture(std::uint32_t seed) {
 float valueNoise(glm::vec3 p, std::uint32_t seed) {
     const glm::vec3 i = glm::floor(p), f = p - i, u = f * f * (3.0f - 2.0f * f);
     auto h = [&](int dx, int dy, int dz) {
-        return float(hash3(std::uint32_t(int(i.x) + dx) ^ seed, std::uint32_t(int(i.y) + dy), std::uint32_t(int(i.z) + dz)) >> 8) /
+        return float(hashInts(std::uint32_t(int(i.x) + dx) ^ seed, std::uint32_t(int(i.y) + dy), std::uint32_t(int(i.z) + dz)) >> 8) /
                16777216.0f;
     };
     const float x00 = glm::mix(h(0, 0, 0), h(1, 0, 0), u.x), x10 = glm::mix(h(0, 1, 0), h(1, 1, 0), u.x);

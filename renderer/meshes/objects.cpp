@@ -1,4 +1,4 @@
-// Objects: loading, placement, upload and the cull, G-buffer and shadow draws (see objects.h).
+// Objects: loading, upload and the cull, G-buffer and shadow draws (see objects.h).
 #include "renderer/meshes/objects.h"
 
 #include "renderer/bindings.h"
@@ -48,8 +48,6 @@ const std::vector<int> kLodCells = {10, 4};
 constexpr int kShadowLod = 1;
 constexpr int kShadowGroup = 3, kImpostorGroup = 4;
 
-bool sameLists(const ObjectsSettings& a, const ObjectsSettings& b) { return a.objects == b.objects && a.scatters == b.scatters; }
-
 gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, GLenum format, const char* name) {
     gl::Texture t = gl::Texture::create2D(1, 1, format, 1, name);
     const std::uint8_t px[4] = {r, g, b, 255};
@@ -91,13 +89,9 @@ ProgramList objectPrograms() {
     return programs;
 }
 
-bool Objects::prepare(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area,
-                      const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors) {
-    emissive_nits_ = s.emissive_nits;
-    if (has_placement_ && sameLists(s, placed_for_)) return stats_.instances > 0;
+bool Objects::place(const std::vector<ObjectPlacement>& placements,
+                    const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors) {
     const auto start = std::chrono::steady_clock::now();
-    has_placement_ = true;
-    placed_for_ = s;
     files_.clear();
     models_.clear();
     placed_.clear();
@@ -118,35 +112,20 @@ bool Objects::prepare(const ObjectsSettings& s, const GroundFunction& ground, co
         files_.push_back(path);
         return index[path] = int(models_.size()) - 1;
     };
-    for (const NamedObject& o : s.objects) {
-        const int m = model(o.object.file, "object." + o.name);
-        if (m < 0) continue;
-        PlacedObject p;
-        p.position = o.object.position;
-        if (o.object.ground_m >= 0.0f) {
-            const GroundSample g = ground ? ground(p.position.x, p.position.z) : GroundSample{};
-            p.position.y = (g.valid ? g.height_m : 0.0) + o.object.ground_m;
-        }
-        p.yaw_rad = float(glm::radians(double(o.object.yaw_deg)));
-        p.scale = o.object.scale;
-        placed_[std::size_t(m)].push_back(p);
-    }
-    for (const NamedScatter& sc : s.scatters) {
+    for (const ObjectPlacement& placement : placements) {
         std::vector<int> ms;
-        for (const std::string& f : sc.rule.files) ms.push_back(model(f, "scatter." + sc.name));
-        if (!ground || area.max.x <= area.min.x) continue;  // scatter needs a terrain
-        const glm::ivec2 lo = scatterCellOf(sc.rule, area.min), hi = scatterCellOf(sc.rule, area.max);
-        for (const PlacedObject& p : scatterRegion(sc.rule, lo, hi, ground)) {
+        for (const std::string& f : placement.files) ms.push_back(model(f, placement.entry));
+        for (const PlacedObject& p : placement.instances) {
             const int m = ms[std::size_t(p.file)];
             if (m >= 0) placed_[std::size_t(m)].push_back(p);
         }
     }
-    upload(s.emissive_nits);
+    upload();
     stats_.place_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats_.instances > 0;
 }
 
-void Objects::upload(float) {
+void Objects::upload() {
     stats_ = ObjectStats{};
     draws_list_.clear();
     textures_.clear();
@@ -310,7 +289,7 @@ void Objects::upload(float) {
                           texture_bytes + white_.bytes() + flat_normal_.bytes();
 }
 
-BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s,
+BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s,
                                   CounterReadback& counters, bool count, BufferHandle after) {
     const BufferHandle imported = graph.importBuffer("objects.lists", BufferDesc{std::size_t(visible_.size())}, visible_.id());
     struct Data {
@@ -390,7 +369,7 @@ void Objects::setMaterial(ObjectBlock& block, int model_index, int material, flo
     }
 }
 
-void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectsSettings* fade) const {
+void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectDrawSettings* fade) const {
     const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws_.id());
@@ -442,7 +421,7 @@ void Objects::drawList(const RenderContext& rc, const glm::mat4& matrix, bool sh
     glBindVertexArray(rc.empty_vao);
 }
 
-void Objects::drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const {
+void Objects::drawImpostors(const RenderContext& rc, const ObjectDrawSettings& s) const {
     const glm::vec3 camera = glm::vec3(rc.view.position - anchor_);
     const GLuint program = rc.shaders.id("renderer/meshes/shaders/impostor.glsl");
     glUseProgram(program);
@@ -640,37 +619,18 @@ void Objects::drawShadowNear(const RenderContext& rc, const glm::dvec3& centre, 
     }
 }
 
-void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, BufferHandle lists,
+void Objects::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s, BufferHandle lists,
                              SceneTargets& targets) {
-    struct DrawData {
-        BufferHandle lists;
-        SceneTargets t;
-    };
-    const DrawData& d = graph.addPass<DrawData>("objects.gbuffer",
-        [&](PassBuilder& b, DrawData& data) {
-            data.lists = b.read(lists);
-            data.t = targets;
-            data.t.hdr = b.write(targets.hdr);
-            data.t.albedo = b.write(targets.albedo);
-            data.t.normal = b.write(targets.normal);
-            data.t.depth = b.write(targets.depth);
-        },
-        [this, &rc, &s](const DrawData& data, PassContext& ctx) {
-            // Baked the first time impostors can be drawn (the atlas render binds its own target).
-            const bool impostors = s.impostor_distance_m < s.max_distance_m;
-            if (impostors) bakeImpostors(rc);
-            const TextureDesc& desc = ctx.desc(data.t.hdr);
-            GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
-                                              ctx.texture(data.t.depth));
-            bindTarget(fb, desc.width, desc.height);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_TRUE);
+    const bool impostors = s.impostor_distance_m < s.max_distance_m;
+    addGbufferDrawPass(graph, rc, "objects.gbuffer", lists, targets,
+        [this, &rc, &s, impostors] {
             drawList(rc, rc.matrices.view_proj, false, &s);
             if (impostors) drawImpostors(rc, s);
-            glDisable(GL_DEPTH_TEST);
+        },
+        [this, &rc, impostors] {
+            // Baked the first time impostors can be drawn (the atlas render binds its own target).
+            if (impostors) bakeImpostors(rc);
         });
-    targets = d.t;
 }
 
 }  // namespace vista

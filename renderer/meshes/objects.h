@@ -1,7 +1,8 @@
 // Objects: glTF models ([objects] object.NAME) and scattered ones (scatter.NAME) drawn instanced
-// into the G-buffer. prepare() loads the models (renderer/meshes/gltf_loader.h), builds two
-// simplified LODs (mesh_lod.h), places the instances (terrain/scatter/scatter.h, over the whole
-// terrain, once per change of the settings) and uploads them. Each frame:
+// into the G-buffer. place() loads the models (renderer/meshes/gltf_loader.h), builds two
+// simplified LODs (mesh_lod.h) and uploads the instances it is given (placed_objects.h: the app
+// places [objects]' lists over the terrain with terrain/scatter/scatter.h, once per change of the
+// lists). Each frame:
 //   "objects.cull"    (compute) frustum + distance culling of every instance on the GPU into
 //                     per-(model, LOD) lists and a shadow-caster list, then the indirect
 //                     commands' instance counts: the CPU's work does not grow with the instances;
@@ -18,11 +19,11 @@
 #include "renderer/frame_graph.h"
 #include "renderer/gl/objects.h"
 #include "renderer/meshes/model.h"
+#include "renderer/meshes/object_draw_settings.h"
+#include "renderer/meshes/placed_objects.h"
 #include "renderer/pass_timers.h"
 #include "renderer/render_context.h"
 #include "renderer/scene_targets.h"
-#include "terrain/scatter/object_settings.h"
-#include "terrain/scatter/scatter.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -77,27 +78,25 @@ struct ObjectStats {
     std::size_t instances = 0;      // placed
     std::uint64_t triangles = 0;    // of every model's full LOD
     std::size_t memory_bytes = 0;
-    double place_ms = 0.0;          // CPU time of the last placement
+    double place_ms = 0.0;          // CPU time of the last place() (loading, LODs, upload)
     std::size_t impostor_bytes = 0; // of the baked atlases (0 until baked)
-};
-
-// The world area scatter rules cover: [min, max] in x and z (the terrain's extent).
-struct ScatterArea {
-    glm::dvec2 min{0.0}, max{0.0};
 };
 
 class Objects {
 public:
-    // Loads and places what s lists (resolve turns a scene path into a file); problems name the
-    // entry and the file. Cheap when nothing changed. Returns false when nothing is to be drawn.
-    bool prepare(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area,
-                 const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors);
+    // Loads the models placements name (resolve turns a scene path into a file; problems name the
+    // entry and the file, a model that fails leaves its instances out) and uploads the instances,
+    // model by model in the order given. Returns false when nothing is to be drawn.
+    bool place(const std::vector<ObjectPlacement>& placements,
+               const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors);
+    // The luminance of emissive factor 1 (ObjectDrawSettings::emissive_nits) the draws use.
+    void setEmissive(float nits) { emissive_nits_ = nits; }
 
     // "objects.cull"; `after`: a buffer the pass must follow (the frame's other shadow casters,
     // so one caster handle orders the shadow passes after both). Returns the culled lists.
-    BufferHandle addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, CounterReadback& counters,
+    BufferHandle addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s, CounterReadback& counters,
                              bool count, BufferHandle after = {});
-    void addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectsSettings& s, BufferHandle lists,
+    void addGbufferPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s, BufferHandle lists,
                         SceneTargets& targets);
     // The shadow-caster list depth-only through matrix (camera-relative world -> clip); adds its
     // triangles to objects.shadow_triangles when the cull pass counted.
@@ -118,7 +117,7 @@ public:
     // no sea, one list), wave_height_m: how far its waves reach above and below it (the split
     // between the sides is the wave band's edge beyond the eye: objects_forward.cpp). Call once a
     // frame before the passes.
-    void sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m, double wave_height_m = 0.0);
+    void sortTransparent(const RenderContext& rc, const ObjectDrawSettings& s, double water_level_m, double wave_height_m = 0.0);
     // "objects.transparent" (EyeSide) and "objects.transparent_beyond_water": the sorted items of
     // that side, forward lit and blended into targets.hdr. Adds nothing when the side has none.
     // fog (valid): the pass comes after "sky.aerial" and each surface fogs itself with the volume
@@ -163,14 +162,12 @@ private:
     struct Texture {
         gl::Texture texture;
     };
-    void upload(float emissive_nits);
-    void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectsSettings* fade) const;
-    void drawImpostors(const RenderContext& rc, const ObjectsSettings& s) const;
+    void upload();
+    void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectDrawSettings* fade) const;
+    void drawImpostors(const RenderContext& rc, const ObjectDrawSettings& s) const;
     // Sets a material's factors in block, binds its textures and sets its face culling.
     void setMaterial(ObjectBlock& block, int model, int material, float emissive_nits, bool shadow) const;
 
-    ObjectsSettings placed_for_;
-    bool has_placement_ = false;
     std::vector<std::string> files_;           // resolved model files, one per model
     std::vector<Model> models_;
     std::vector<std::vector<PlacedObject>> placed_;  // per model

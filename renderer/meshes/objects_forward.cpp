@@ -58,7 +58,7 @@ void Objects::collectBlend() {
     }
 }
 
-void Objects::sortTransparent(const RenderContext& rc, const ObjectsSettings& s, double water_level_m, double wave_height_m) {
+void Objects::sortTransparent(const RenderContext& rc, const ObjectDrawSettings& s, double water_level_m, double wave_height_m) {
     for (Side& side : sides_) side = Side{};
     transparent_drawn_ = transparent_dropped_ = 0;
     transparent_top_ = -std::numeric_limits<double>::infinity();

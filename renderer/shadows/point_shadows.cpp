@@ -3,7 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
+#include "renderer/shadows/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,22 +12,6 @@
 #include <cmath>
 
 namespace vista {
-namespace {
-#include "renderer/shadows/shaders/shadow_view_block.glsl"
-}  // namespace
-
-void PointShadowInput::bind(GLuint texture) const {
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kPointShadowUniforms, uniforms);
-    glBindTextureUnit(binding::kPointShadowMap, texture);
-    glBindSampler(binding::kPointShadowMap, compare_sampler);
-    glBindTextureUnit(binding::kPointShadowDepth, texture);
-    glBindSampler(binding::kPointShadowDepth, depth_sampler);
-}
-
-void PointShadowInput::unbind() {
-    glBindSampler(binding::kPointShadowMap, 0);
-    glBindSampler(binding::kPointShadowDepth, 0);
-}
 
 namespace {
 
@@ -79,8 +63,6 @@ int pointCubeFace(const glm::dvec3& d) {
 }
 
 PointShadows::PointShadows() = default;
-PointShadows::~PointShadows() = default;
-
 bool PointShadows::prepare(const ShadowSettings& s, std::span<const Light> lights, const ViewParams& view,
                            const ViewMatrices& m) {
     settings_ = s;
@@ -109,18 +91,11 @@ void PointShadows::allocate(int resolution, int cubes) {
     cube_count_ = cubes;
     fb_ = gl::createFramebuffer("point shadow face");
     glNamedFramebufferDrawBuffer(fb_.id(), GL_NONE);
-    if (!uniforms_)
-        uniforms_ = gl::Buffer::create(sizeof(PointShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "point shadow uniforms");
-    if (!compare_) {
-        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "point shadow compare");
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);  // reversed-Z: nearer is larger
-        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "point shadow depth");
-    }
+    objects_.create(sizeof(PointShadowUniforms), GL_GEQUAL, "point shadow");
 }
 
-PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                       const TerrainSettings& ts, const ShadowCaster& extra) {
+PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                       const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     instances_.resize(count * kCubeFaces);
@@ -133,7 +108,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
         for (std::size_t f = 0; f < kCubeFaces; ++f) {
             auto& list = instances_[k * kCubeFaces + f];
             list.clear();
-            tess_[k * kCubeFaces + f] = terrain ? terrain->shadowInstances(ts, frusta_[k * kCubeFaces + f], list, true) : 0;
+            tess_[k * kCubeFaces + f] = terrain ? terrain->pick(frusta_[k * kCubeFaces + f], list, true) : 0;
             stats_.caster_instances += std::int64_t(list.size());
             faces += list.size();
         }
@@ -151,7 +126,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
     u.params = glm::vec4(float(int(s.spot_filter)), float(s.spot_taps), float(s.point_resolution), s.spot_max_penumbra_texels);
     u.bias = glm::vec4(s.point_normal_offset_texels, s.point_depth_bias_texels, s.spot_filter_radius_texels,
                        s.spot_light_size_m);
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glNamedBufferSubData(objects_.uniforms.id(), 0, sizeof u, &u);
 
     TextureHandle cubes_handle = graph.importTexture(
         "shadows.point_cubes", {s.point_resolution, s.point_resolution, PixelFormat::Depth32F}, cubes_.id());
@@ -163,7 +138,7 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             data.cubes = b.write(cubes_handle);
             if (extra.valid()) b.read(extra.reads);
         },
-        [this, &rc, terrain, &ts, extra](const Data&, PassContext&) {
+        [this, &rc, terrain, extra](const Data&, PassContext&) {
             const int res = resolution_;
             // Face f of cube k is layer 6 k + f; every drawn light's faces start at the light's radius.
             auto bindFace = [&](std::size_t k, std::size_t f) {
@@ -182,9 +157,9 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDepthFunc(GL_GREATER);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.point_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+            GLuint program = terrain->program(rc);
             glUseProgram(program);
-            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t i) {
+            terrain->drawLists(rc, program, instances_, tess_, [&](std::size_t i) {
                 bindFace(i / kCubeFaces, i % kCubeFaces);
                 return glm::mat4(views_[i / kCubeFaces].view_proj[i % kCubeFaces]);
             });
@@ -212,33 +187,13 @@ PointShadowInput PointShadows::addPass(FrameGraph& graph, const RenderContext& r
             glDisable(GL_POLYGON_OFFSET_FILL);
             glDisable(GL_DEPTH_TEST);
         });
-    return {d.cubes, uniforms_.id(), compare_.id(), depth_.id()};
+    return {d.cubes, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id()};
 }
 
 TextureHandle addPointShadowViewPass(FrameGraph& graph, const RenderContext& rc, const PointShadowInput& shadows,
                                      int cubes) {
-    struct Data {
-        TextureHandle cubes, out;
-    };
-    const Data& d = graph.addPass<Data>("shadows.point_view",
-        [&](PassBuilder& b, Data& data) {
-            if (shadows.valid()) data.cubes = b.read(shadows.cubes);
-            data.out = b.write(b.create("shadows.point_view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
-        },
-        [&rc, shadows, cubes](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.id("renderer/shadows/shaders/point_shadow_view.glsl");
-            glUseProgram(program);
-            bindPassBlock(rc, program, ShadowViewBlock{{data.cubes.valid() ? cubes : 0, 0, 0, 0}});
-            if (data.cubes.valid()) {
-                glBindTextureUnit(binding::kPointShadowDepth, ctx.texture(data.cubes));
-                glBindSampler(binding::kPointShadowDepth, shadows.depth_sampler);
-            }
-            drawFullscreen(rc);
-            glBindSampler(binding::kPointShadowDepth, 0);
-        });
-    return d.out;
+    return addShadowViewPass(graph, rc, {"shadows.point_view", "renderer/shadows/shaders/point_shadow_view.glsl",
+                                         shadows.cubes, shadows.depth_sampler, binding::kPointShadowDepth, {cubes, 0, 0, 0}});
 }
 
 }  // namespace vista

@@ -20,8 +20,10 @@
 #include "renderer/camera.h"
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
+#include "renderer/shadows/shadow_binding.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 #include "renderer/shadows/spot_shadows.h"
 
 #include <glm/mat4x4.hpp>
@@ -33,9 +35,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 inline constexpr int kMaxPointShadows = 16;  // POINT_SHADOW_MAX in point_shadows.glsl
 inline constexpr int kCubeFaces = 6;
@@ -61,8 +60,10 @@ struct PointShadowInput {
     bool valid() const { return cubes.valid(); }
     // Binds the uniforms and the cubes (this pass's texture of `cubes`) with both samplers at the
     // kPointShadow* bindings lights.glsl reads (HAS_POINT_SHADOWS); unbind() takes the samplers off again.
-    void bind(GLuint texture) const;
-    static void unbind();
+    void bind(GLuint texture) const {
+        bindShadowInput(kPointShadowBindings, uniforms, texture, compare_sampler, depth_sampler);
+    }
+    static void unbind() { unbindShadowInput(kPointShadowBindings); }
 };
 
 struct PointShadowStats {
@@ -75,7 +76,6 @@ struct PointShadowStats {
 class PointShadows {
 public:
     PointShadows();
-    ~PointShadows();  // in the .cpp: TerrainInstance is incomplete here
     PointShadows(const PointShadows&) = delete;
     PointShadows& operator=(const PointShadows&) = delete;
     // Picks this frame's shadowed point lights and their face views relative to the camera.
@@ -88,13 +88,13 @@ public:
 
     // "shadows.point_cubes": every picked light's six faces (terrain from the current selection,
     // then `extra` when valid). Lights with no terrain near them keep slot -1 (read as lit).
-    PointShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    PointShadowInput addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                              const ShadowCaster& extra = {});
     // After addPass: the cube of pick k, or -1.
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const PointShadowStats& stats() const { return stats_; }
     // GPU bytes held across frames: the cubes (kept once drawn) and the uniforms.
-    std::size_t memoryBytes() const { return cubes_.bytes() + std::size_t(uniforms_.size()); }
+    std::size_t memoryBytes() const { return cubes_.bytes() + objects_.bytes(); }
     int cubes() const { return cube_count_; }  // cubes allocated (point_max_lights)
 
 private:
@@ -113,8 +113,7 @@ private:
     gl::Texture cubes_;
     int resolution_ = 0, cube_count_ = 0;
     gl::Framebuffer fb_;
-    gl::Buffer uniforms_;
-    gl::Sampler compare_, depth_;
+    ShadowReadObjects objects_;
 };
 
 // "shadows.point_view": each shadowed light's cube as a row of its six faces in grey levels (near

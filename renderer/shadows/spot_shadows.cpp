@@ -3,7 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
+#include "renderer/shadows/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,22 +14,6 @@
 #include <limits>
 
 namespace vista {
-namespace {
-#include "renderer/shadows/shaders/shadow_view_block.glsl"
-}  // namespace
-
-void SpotShadowInput::bind(GLuint texture) const {
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kSpotShadowUniforms, uniforms);
-    glBindTextureUnit(binding::kSpotShadowMap, texture);
-    glBindSampler(binding::kSpotShadowMap, compare_sampler);
-    glBindTextureUnit(binding::kSpotShadowDepth, texture);
-    glBindSampler(binding::kSpotShadowDepth, depth_sampler);
-}
-
-void SpotShadowInput::unbind() {
-    glBindSampler(binding::kSpotShadowMap, 0);
-    glBindSampler(binding::kSpotShadowDepth, 0);
-}
 
 namespace {
 
@@ -136,18 +120,11 @@ void SpotShadows::allocate(int resolution) {
     atlas_fb_ = gl::createFramebuffer("spot shadow atlas");
     glNamedFramebufferTexture(atlas_fb_.id(), GL_DEPTH_ATTACHMENT, atlas_.id(), 0);
     glNamedFramebufferDrawBuffer(atlas_fb_.id(), GL_NONE);
-    if (!uniforms_)
-        uniforms_ = gl::Buffer::create(sizeof(SpotShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "spot shadow uniforms");
-    if (!compare_) {
-        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "spot shadow compare");
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);  // reversed-Z: nearer is larger
-        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "spot shadow depth");
-    }
+    objects_.create(sizeof(SpotShadowUniforms), GL_GEQUAL, "spot shadow");
 }
 
-SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts, const ShadowCaster& extra) {
+SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                     const ShadowCaster& extra) {
     const ShadowSettings& s = settings_;
     const std::size_t count = picks_.size();
     tiles_per_side_ = spotAtlasTilesPerSide(std::min(s.spot_max_lights, kMaxSpotShadows));
@@ -160,7 +137,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
     for (std::size_t k = 0; k < count; ++k) {
         auto& list = instances_[k];
         list.clear();
-        tess_[k] = terrain ? terrain->shadowInstances(ts, frusta_[k], list, true) : 0;
+        tess_[k] = terrain ? terrain->pick(frusta_[k], list, true) : 0;
         stats_.caster_instances += std::int64_t(list.size());
         if (list.empty()) continue;  // nothing casts: the light stays unshadowed (lit), no tile drawn
         slots_[k] = int(k);
@@ -178,7 +155,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
     u.params = glm::vec4(float(int(s.spot_filter)), float(s.spot_taps), float(tile), s.spot_max_penumbra_texels);
     u.bias = glm::vec4(s.spot_normal_offset_texels, s.spot_depth_bias_texels, s.spot_filter_radius_texels,
                        s.spot_light_size_m);
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glNamedBufferSubData(objects_.uniforms.id(), 0, sizeof u, &u);
     stats_.memory_bytes = memoryBytes();
 
     TextureHandle atlas = graph.importTexture(
@@ -191,7 +168,7 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             data.atlas = b.write(atlas);
             if (extra.valid()) b.read(extra.reads);
         },
-        [this, &rc, terrain, &ts, tile, extra](const Data&, PassContext&) {
+        [this, &rc, terrain, tile, extra](const Data&, PassContext&) {
             const int res = settings_.spot_atlas_resolution;
             bindTarget(atlas_fb_.id(), res, res);
             glDepthMask(GL_TRUE);
@@ -202,14 +179,14 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glEnable(GL_SCISSOR_TEST);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-settings_.spot_slope_bias, 0.0f);  // away from the light is smaller depth
-            GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+            GLuint program = terrain->program(rc);
             glUseProgram(program);
             auto bindTile = [&](std::size_t k) {
                 const int x = int(k) % tiles_per_side_ * tile, y = int(k) / tiles_per_side_ * tile;
                 glViewport(x, y, tile, tile);
                 glScissor(x, y, tile, tile);
             };
-            terrain->drawShadowLists(rc, ts, program, instances_, tess_, [&](std::size_t k) {
+            terrain->drawLists(rc, program, instances_, tess_, [&](std::size_t k) {
                 bindTile(k);
                 return glm::mat4(views_[k].view_proj);
             });
@@ -223,33 +200,13 @@ SpotShadowInput SpotShadows::addPass(FrameGraph& graph, const RenderContext& rc,
             glDisable(GL_SCISSOR_TEST);
             glDisable(GL_DEPTH_TEST);
         });
-    return {d.atlas, uniforms_.id(), compare_.id(), depth_.id()};
+    return {d.atlas, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id()};
 }
 
 TextureHandle addSpotAtlasViewPass(FrameGraph& graph, const RenderContext& rc, const SpotShadowInput& shadows,
                                    int tiles_per_side) {
-    struct Data {
-        TextureHandle atlas, out;
-    };
-    const Data& d = graph.addPass<Data>("shadows.spot_view",
-        [&](PassBuilder& b, Data& data) {
-            if (shadows.valid()) data.atlas = b.read(shadows.atlas);
-            data.out = b.write(b.create("shadows.spot_view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
-        },
-        [&rc, shadows, tiles_per_side](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.id("renderer/shadows/shaders/spot_atlas_view.glsl");
-            glUseProgram(program);
-            bindPassBlock(rc, program, ShadowViewBlock{{data.atlas.valid() ? tiles_per_side : 0, 0, 0, 0}});
-            if (data.atlas.valid()) {
-                glBindTextureUnit(binding::kSpotShadowDepth, ctx.texture(data.atlas));
-                glBindSampler(binding::kSpotShadowDepth, shadows.depth_sampler);
-            }
-            drawFullscreen(rc);
-            glBindSampler(binding::kSpotShadowDepth, 0);
-        });
-    return d.out;
+    return addShadowViewPass(graph, rc, {"shadows.spot_view", "renderer/shadows/shaders/spot_atlas_view.glsl", shadows.atlas,
+                                         shadows.depth_sampler, binding::kSpotShadowDepth, {tiles_per_side, 0, 0, 0}});
 }
 
 }  // namespace vista

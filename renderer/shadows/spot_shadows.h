@@ -24,8 +24,10 @@
 #include "renderer/gl/objects.h"
 #include "renderer/lights.h"
 #include "renderer/render_context.h"
+#include "renderer/shadows/shadow_binding.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -36,9 +38,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 inline constexpr int kMaxSpotShadows = 64;          // SPOT_SHADOW_MAX in spot_shadows.glsl
 inline constexpr float kMaxShadowedSpotDeg = 85.0f;  // outer half-angles from here on cast no shadow
@@ -82,8 +81,10 @@ struct SpotShadowInput {
     bool valid() const { return atlas.valid(); }
     // Binds the uniforms and the atlas (this pass's texture of `atlas`) with both samplers at the
     // kSpotShadow* bindings lights.glsl reads (HAS_SPOT_SHADOWS); unbind() takes the samplers off again.
-    void bind(GLuint texture) const;
-    static void unbind();
+    void bind(GLuint texture) const {
+        bindShadowInput(kSpotShadowBindings, uniforms, texture, compare_sampler, depth_sampler);
+    }
+    static void unbind() { unbindShadowInput(kSpotShadowBindings); }
 };
 
 struct SpotShadowStats {
@@ -108,13 +109,13 @@ public:
     // "shadows.spot_atlas": every picked light's tile (terrain casters from the current
     // selection, then `extra`, e.g. grass, when valid). Lights with no terrain in their frustum
     // keep slot -1 (see slotOf()).
-    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    SpotShadowInput addPass(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                             const ShadowCaster& extra = {});
     // After addPass: the tile of pick k, or -1 when nothing casts into it (read as lit).
     int slotOf(std::size_t pick) const { return pick < slots_.size() ? slots_[pick] : -1; }
     const SpotShadowStats& stats() const { return stats_; }
     // GPU bytes held across frames: the atlas (kept once drawn) and the uniforms.
-    std::size_t memoryBytes() const { return atlas_.bytes() + std::size_t(uniforms_.size()); }
+    std::size_t memoryBytes() const { return atlas_.bytes() + objects_.bytes(); }
     GLuint atlasTexture() const { return atlas_.id(); }
     int tilesPerSide() const { return tiles_per_side_; }
 
@@ -135,8 +136,7 @@ private:
     gl::Texture atlas_;
     int atlas_resolution_ = 0;
     gl::Framebuffer atlas_fb_;
-    gl::Buffer uniforms_;
-    gl::Sampler compare_, depth_;
+    ShadowReadObjects objects_;
 };
 
 // "shadows.spot_view": the atlas's tiles as grey levels (near the light bright), for

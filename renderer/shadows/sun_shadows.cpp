@@ -3,7 +3,7 @@
 
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
-#include "terrain/terrain.h"
+#include "renderer/shadows/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -14,9 +14,6 @@
 #include <limits>
 
 namespace vista {
-namespace {
-#include "renderer/shadows/shaders/shadow_view_block.glsl"
-}  // namespace
 
 namespace {
 
@@ -30,19 +27,6 @@ struct ShadowUniforms {
 };
 
 }  // namespace
-
-void SunShadowInput::bind(GLuint map_texture) const {
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kShadowUniforms, uniforms);
-    glBindTextureUnit(binding::kShadowMap, map_texture);
-    glBindSampler(binding::kShadowMap, compare_sampler);
-    glBindTextureUnit(binding::kShadowDepth, map_texture);
-    glBindSampler(binding::kShadowDepth, depth_sampler);
-}
-
-void SunShadowInput::unbind() {
-    glBindSampler(binding::kShadowMap, 0);
-    glBindSampler(binding::kShadowDepth, 0);
-}
 
 bool sunCastsShadows(const ShadowSettings& s, const glm::dvec3& sun_dir) {
     return s.enabled && sun_dir.y > std::sin(glm::radians(double(s.min_sun_elevation_deg))) && sun_dir.y > 0.0;
@@ -131,18 +115,11 @@ void SunShadows::allocate(int resolution, int layers) {
         glNamedFramebufferTextureLayer(layer_fbs_.back().id(), GL_DEPTH_ATTACHMENT, id, 0, i);
         glNamedFramebufferDrawBuffer(layer_fbs_.back().id(), GL_NONE);
     }
-    if (!uniforms_)
-        uniforms_ = gl::Buffer::create(sizeof(ShadowUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "shadow uniforms");
-    if (!compare_) {
-        compare_ = gl::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "shadow compare");
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        depth_ = gl::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "shadow depth");
-    }
+    objects_.create(sizeof(ShadowUniforms), GL_LEQUAL, "shadow");
 }
 
-SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain,
-                                     const TerrainSettings& ts, const ShadowCaster& extra, double receivers_above_m) {
+SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
+                                     const ShadowCaster& extra, double receivers_above_m) {
     const ShadowSettings& s = settings_;
     const int count = int(cascades_.size());
     stats_ = {};
@@ -157,10 +134,9 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     const double texel0 = count > 0 ? cascades_[0].texel_m : 1.0;
     // Casters matter up to where a ray towards the sun clears the terrain's whole height span.
     double reach = std::numeric_limits<double>::infinity();
-    if (terrain && terrain->quadtree().levels() > 0) {
-        const MinMaxQuadtree& tree = terrain->quadtree();
-        glm::vec2 span = tree.minMax(tree.levels() - 1, 0, 0);
-        reach = (double(span.y) - double(span.x)) / std::max(light_.dir.y, 1e-3) + 1.0;
+    if (terrain) {
+        const glm::dvec2 span = terrain->heightRange();
+        reach = (span.y - span.x) / std::max(light_.dir.y, 1e-3) + 1.0;
     }
     for (int i = 0; i < count; ++i) {
         const ShadowCascade& c = cascades_[std::size_t(i)];
@@ -204,8 +180,8 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
             }
             // Tessellated casters where the cascade serves displaced ground.
             std::size_t skipped = 0;
-            tess_[std::size_t(i)] = terrain->shadowInstances(ts, casterPlanes(light_, c, camera_, reach), list,
-                                                             serves_from < terrain->tessReach(ts), keep, &skipped);
+            tess_[std::size_t(i)] = terrain->pick(casterPlanes(light_, c, camera_, reach), list,
+                                                  serves_from < terrain->tessReach(), keep, &skipped);
             stats_.casters_skipped += std::int64_t(skipped);
         }
         stats_.caster_instances += std::int64_t(list.size());
@@ -216,7 +192,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     allocate(s.resolution, count);
     u.params = glm::vec4(float(count), s.blend_band, float(s.pcf_taps), float(int(s.filter)));
     u.bias = glm::vec4(s.normal_offset_texels, s.depth_bias_texels, tan_sun_radius_, s.max_penumbra_texels);
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
+    glNamedBufferSubData(objects_.uniforms.id(), 0, sizeof u, &u);
     stats_.memory_bytes = std::size_t(s.resolution) * std::size_t(s.resolution) * 4u * std::size_t(count) + sizeof u;
 
     TextureHandle map = graph.importTexture("shadows.map", {s.resolution, s.resolution, PixelFormat::Depth32F}, map_.id());
@@ -231,7 +207,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 data.map = b.write(map);
                 if (draw_extra) b.read(extra.reads);
             },
-            [this, &rc, terrain, &ts, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
+            [this, &rc, terrain, i, extra = draw_extra ? extra : ShadowCaster{}](const Data&, PassContext&) {
                 const int res = settings_.resolution;
                 bindTarget(layer_fbs_[std::size_t(i)].id(), res, res);
                 glDepthMask(GL_TRUE);
@@ -242,7 +218,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_DEPTH_CLAMP);  // casters between the box and the sun land on depth 0
                 glEnable(GL_POLYGON_OFFSET_FILL);
                 glPolygonOffset(settings_.slope_bias, 0.0f);
-                GLuint program = rc.shaders.id("terrain/shaders/terrain.glsl", terrain->shadowDefines());
+                GLuint program = terrain->program(rc);
                 glUseProgram(program);
                 const glm::mat4 m = glm::mat4(cascades_[std::size_t(i)].matrix);
                 // Seen from the sun, the terrain's back faces lie behind its front faces (a
@@ -250,7 +226,7 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
                 glFrontFace(GL_CCW);
-                terrain->drawShadow(rc, ts, program, m, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
+                terrain->draw(rc, program, m, instances_[std::size_t(i)], tess_[std::size_t(i)], i);
                 glDisable(GL_CULL_FACE);
                 if (extra.valid()) extra.draw(m);
                 glDisable(GL_POLYGON_OFFSET_FILL);
@@ -264,38 +240,13 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     unsigned drawn = 0;
     for (int i = 0; i < count; ++i)
         if (u.info[i].x != 0.0f) drawn |= 1u << i;
-    return {map, uniforms_.id(), compare_.id(), depth_.id(), drawn};
+    return {map, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id(), drawn};
 }
 
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
                                    int cascades) {
-    struct Data {
-        TextureHandle map, out;
-    };
-    const Data& d = graph.addPass<Data>("shadows.view",
-        [&](PassBuilder& b, Data& data) {
-            if (shadows.valid()) data.map = b.read(shadows.map);
-            data.out = b.write(b.create("shadows.view", {rc.view.width, rc.view.height, PixelFormat::RGBA8}));
-        },
-        [&rc, shadows, cascades](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.out);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.out)}), desc.width, desc.height);
-            const GLuint program = rc.shaders.id("renderer/shadows/shaders/shadow_view.glsl");
-            glUseProgram(program);
-            bindPassBlock(rc, program, ShadowViewBlock{{data.map.valid() ? cascades : 0, int(shadows.drawn), 0, 0}});
-            if (data.map.valid()) {
-                glBindTextureUnit(binding::kShadowDepth, ctx.texture(data.map));
-                glBindSampler(binding::kShadowDepth, shadows.depth_sampler);
-            }
-            drawFullscreen(rc);
-            glBindSampler(binding::kShadowDepth, 0);
-        });
-    return d.out;
-}
-
-ProgramList shadowPrograms() {
-    return {{"renderer/shadows/shaders/shadow_view.glsl", {}}, {"renderer/shadows/shaders/spot_atlas_view.glsl", {}},
-            {"renderer/shadows/shaders/point_shadow_view.glsl", {}}};
+    return addShadowViewPass(graph, rc, {"shadows.view", "renderer/shadows/shaders/shadow_view.glsl", shadows.map,
+                                         shadows.depth_sampler, binding::kShadowDepth, {cascades, int(shadows.drawn), 0, 0}});
 }
 
 }  // namespace vista

@@ -8,8 +8,10 @@
 #include "renderer/gl/objects.h"
 #include "renderer/render_context.h"
 #include "renderer/shadows/cascades.h"
+#include "renderer/shadows/shadow_binding.h"
 #include "renderer/shadows/shadow_caster.h"
 #include "renderer/shadows/shadow_settings.h"
+#include "renderer/shadows/terrain_caster.h"
 
 #include <array>
 #include <cstdint>
@@ -19,9 +21,6 @@
 
 namespace vista {
 
-class Terrain;
-struct TerrainInstance;
-struct TerrainSettings;
 
 struct SunShadowStats {
     int cascades = 0;                // in use this frame (PSSM + far)
@@ -42,8 +41,10 @@ struct SunShadowInput {
     bool valid() const { return map.valid(); }
     // Binds the uniforms and map (this pass's texture of `map`) with both samplers at the
     // kShadow* bindings shadows.glsl reads; unbind() takes the samplers off again.
-    void bind(GLuint map_texture) const;
-    static void unbind();
+    void bind(GLuint map_texture) const {
+        bindShadowInput(kSunShadowBindings, uniforms, map_texture, compare_sampler, depth_sampler);
+    }
+    static void unbind() { unbindShadowInput(kSunShadowBindings); }
 };
 
 // Whether the sun casts shadows with these settings (enabled and above min_sun_elevation_deg).
@@ -75,7 +76,7 @@ public:
     // The farthest cache_cascades cascades keep their map from the frame that drew them while
     // their snapped box and the sun stay put, up to cache_frames frames (shadows.cascades_cached);
     // one that draws `extra` (grass sways) is drawn every frame.
-    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, Terrain* terrain, const TerrainSettings& ts,
+    SunShadowInput addPasses(FrameGraph& graph, const RenderContext& rc, TerrainCaster* terrain,
                              const ShadowCaster& extra = {},
                              double receivers_above_m = -std::numeric_limits<double>::infinity());
 
@@ -114,8 +115,7 @@ private:
     gl::Texture map_;
     int map_resolution_ = 0, map_layers_ = 0;
     std::vector<gl::Framebuffer> layer_fbs_;
-    gl::Buffer uniforms_;
-    gl::Sampler compare_, depth_;
+    ShadowReadObjects objects_;
 };
 
 // "shadows.view": the cascades' depth maps side by side ([debug] view = shadow_map), near the
@@ -123,6 +123,5 @@ private:
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,
                                    int cascades);
 
-ProgramList shadowPrograms();
 
 }  // namespace vista

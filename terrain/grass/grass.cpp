@@ -224,36 +224,14 @@ TextureHandle Grass::addVelocityPass(FrameGraph& graph, const RenderContext& rc,
 
 void Grass::addGbufferPass(FrameGraph& graph, const RenderContext& rc, const GrassSettings& s, BufferHandle blades,
                            SceneTargets& targets) {
-    struct DrawData {
-        BufferHandle blades;
-        SceneTargets t;
-    };
-    const DrawData& d = graph.addPass<DrawData>("grass.gbuffer",
-        [&](PassBuilder& b, DrawData& data) {
-            data.blades = b.read(blades);
-            data.t = targets;
-            data.t.hdr = b.write(targets.hdr);
-            data.t.albedo = b.write(targets.albedo);
-            data.t.normal = b.write(targets.normal);
-            data.t.depth = b.write(targets.depth);
-        },
-        [this, &rc, &s](const DrawData& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.t.hdr);
-            GLuint fb = rc.device.framebuffer({ctx.texture(data.t.hdr), ctx.texture(data.t.albedo), ctx.texture(data.t.normal)},
-                                              ctx.texture(data.t.depth));
-            bindTarget(fb, desc.width, desc.height);
-            GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl");
-            glUseProgram(program);
-            GrassBlock block{};
-            block.u_look = {s.root_darkening, s.roughness, s.normal_blend, wetness_};
-            glBindVertexArray(rc.empty_vao);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_TRUE);
-            drawLists(rc, program, s, block);
-            glDisable(GL_DEPTH_TEST);
-        });
-    targets = d.t;
+    addGbufferDrawPass(graph, rc, "grass.gbuffer", blades, targets, [this, &rc, &s] {
+        GLuint program = rc.shaders.id("terrain/grass/shaders/grass.glsl");
+        glUseProgram(program);
+        GrassBlock block{};
+        block.u_look = {s.root_darkening, s.roughness, s.normal_blend, wetness_};
+        glBindVertexArray(rc.empty_vao);
+        drawLists(rc, program, s, block);
+    });
 }
 
 }  // namespace vista

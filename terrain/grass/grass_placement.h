@@ -9,6 +9,7 @@
 // a hash of (n.x, n.z, j): the same place always shows the same blades.
 #pragma once
 
+#include "renderer/random.h"
 #include "terrain/grass/grass_settings.h"
 
 #include <glm/vec2.hpp>
@@ -19,15 +20,7 @@
 namespace vista {
 
 // Integer hash shared with grass_common.glsl (grassHash): same bits on CPU and GPU.
-inline std::uint32_t grassHash(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    std::uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
+inline std::uint32_t grassHash(std::uint32_t x, std::uint32_t y, std::uint32_t z) { return hashInts(x, y, z); }
 // Random number k in [0, 1) of a blade whose hash is h (grassRandom in GLSL).
 inline float grassRandom(std::uint32_t h, std::uint32_t k) {
     return float(grassHash(h, k, 0x2545f491u) >> 8) * (1.0f / 16777216.0f);

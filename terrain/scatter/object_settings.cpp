@@ -2,81 +2,23 @@
 // like the light lists: every token checked, so a typo is an error, not a missing forest.
 #include "terrain/scatter/object_settings.h"
 
-#include <charconv>
+#include "config/spec_text.h"
+
 #include <cmath>
-#include <cstdio>
 
 namespace vista {
 namespace {
 
-std::vector<std::string_view> tokens(std::string_view text) {
-    std::vector<std::string_view> out;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-        std::size_t j = i;
-        while (j < text.size() && text[j] != ' ' && text[j] != '\t') ++j;
-        if (j > i) out.push_back(text.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
+using spec::Reader;
+using spec::str;
 
-bool toDouble(std::string_view t, double& v) {
-    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc() && end == t.data() + t.size() && std::isfinite(v);
-}
 bool isNumber(std::string_view t) {
     double v;
-    return toDouble(t, v);
-}
-std::string str(double v) {
-    char buf[32];
-    return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
-}
-std::string str(float v) {
-    char buf[32];
-    return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
-}
-std::string bound(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
+    return spec::toDouble(t, v);
 }
 bool isModelFile(std::string_view t) {
     return t.size() > 5 && (t.ends_with(".glb") || t.ends_with(".gltf") || t.ends_with(".GLB") || t.ends_with(".GLTF"));
 }
-
-class Reader {
-public:
-    explicit Reader(std::string_view text) : t_(tokens(text)) {}
-    bool done() const { return i_ >= t_.size(); }
-    std::string_view peek() const { return i_ < t_.size() ? t_[i_] : std::string_view(); }
-    std::string_view word() { return i_ < t_.size() ? t_[i_++] : std::string_view(); }
-    bool numbers(std::string_view what, double* out, int n, double lo, double hi, std::string& error) {
-        for (int k = 0; k < n; ++k) {
-            if (i_ >= t_.size()) {
-                error = std::string(what) + " needs " + std::to_string(n) + " number" + (n > 1 ? "s" : "");
-                return false;
-            }
-            std::string_view tok = t_[i_++];
-            if (!toDouble(tok, out[k])) {
-                error = std::string(what) + ": '" + std::string(tok) + "' is not a number";
-                return false;
-            }
-            if (out[k] < lo || out[k] > hi) {
-                error = std::string(what) + ": " + std::string(tok) + " is outside [" + bound(lo) + ", " + bound(hi) + "]";
-                return false;
-            }
-        }
-        return true;
-    }
-
-private:
-    std::vector<std::string_view> t_;
-    std::size_t i_ = 0;
-};
 
 void describeObject(SettingsVisitor& v, ObjectInstanceSpec& o) {
     v.field({"file", "", "glTF/GLB model (.gltf or .glb)"}, o.file);

@@ -1,6 +1,6 @@
 // The [objects] section of a scene file (Settings::objects): glTF models placed one by one
 // (object.NAME) and scattered by rules over the terrain (scatter.NAME), and how they are drawn.
-// Part of vista_config (no renderer code), like [lights]' light_settings.
+// Built into vista_scene (no GL), like [lights]' light_settings.
 //
 // List keys (one line each in the file; keyword groups after the first words in any order):
 //
@@ -23,6 +23,7 @@
 #pragma once
 
 #include "config/visitor.h"
+#include "renderer/meshes/object_draw_settings.h"
 
 #include <glm/vec3.hpp>
 
@@ -67,16 +68,10 @@ struct NamedScatter {
 
 //! Objects (renderer/meshes/objects.h): glTF models instanced into the G-buffer with GPU culling
 //! and LODs, casting into the sun cascades and the spot atlas. No entries: no pass, no memory.
-struct ObjectsSettings {
+//! How they are drawn is ObjectDrawSettings' part (renderer/meshes/object_draw_settings.h); what
+//! is placed where, the lists, is placed by terrain/scatter/scatter.h placeObjects().
+struct ObjectsSettings : ObjectDrawSettings {
     bool enabled = true;
-    float lod1_distance_m = 60.0f;    //!< m, beyond this the first simplified LOD, 1..1e5
-    float lod2_distance_m = 250.0f;   //!< m, beyond this the coarsest LOD, 1..1e5
-    float max_distance_m = 2500.0f;   //!< m, instances farther away are not drawn, 1..1e6
-    float impostor_distance_m = 150.0f; //!< m, beyond this an octahedral impostor replaces the mesh, 1..1e6
-    float impostor_fade_m = 15.0f;    //!< m, dithered cross-fade from mesh to impostor before that distance, 0..1e4
-    float shadow_distance_m = 300.0f; //!< m, instances within this cast shadows (coarsest LOD beyond lod1), 0..1e5
-    bool cast_shadows = true;
-    float emissive_nits = 60.0f;      //!< cd/m^2 of emissive factor 1 (glow maps, windows), 0..1e6
     std::vector<NamedObject> objects;    //!< object.NAME keys
     std::vector<NamedScatter> scatters;  //!< scatter.NAME keys
 };

@@ -1,22 +1,17 @@
 // Per-cell scatter placement (see scatter.h).
 #include "terrain/scatter/scatter.h"
 
+#include "renderer/random.h"
+
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
 namespace vista {
 namespace {
 
-std::uint32_t hash4(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
-    std::uint32_t h = a * 0x8da6b343u ^ b * 0xd8163841u ^ c * 0xcb1ab31fu ^ d * 0x165667b1u;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
-double unit(std::uint32_t h, std::uint32_t k) { return double(hash4(h, k, 0x2545f491u, 0x9e3779b9u) >> 8) / 16777216.0; }
+double unit(std::uint32_t h, std::uint32_t k) { return double(hashInts(h, k, 0x2545f491u, 0x9e3779b9u) >> 8) / 16777216.0; }
 
 }  // namespace
 
@@ -26,7 +21,7 @@ glm::ivec2 scatterCellOf(const ScatterRule& r, glm::dvec2 xz) {
 
 int scatterCandidates(const ScatterRule& r, glm::ivec2 cell) {
     const double mean = r.density * double(r.cell_m) * double(r.cell_m);
-    const std::uint32_t h = hash4(std::uint32_t(cell.x), std::uint32_t(cell.y), r.seed, 0xc0ffeeu);
+    const std::uint32_t h = hashInts(std::uint32_t(cell.x), std::uint32_t(cell.y), r.seed, 0xc0ffeeu);
     return int(std::floor(mean + unit(h, 0)));
 }
 
@@ -34,7 +29,7 @@ void scatterCell(const ScatterRule& r, glm::ivec2 cell, const GroundFunction& gr
     if (r.files.empty()) return;
     const int n = scatterCandidates(r, cell);
     for (int j = 0; j < n; ++j) {
-        const std::uint32_t h = hash4(std::uint32_t(cell.x), std::uint32_t(cell.y), std::uint32_t(j), r.seed);
+        const std::uint32_t h = hashInts(std::uint32_t(cell.x), std::uint32_t(cell.y), std::uint32_t(j), r.seed);
         const double x = (double(cell.x) + unit(h, 1)) * r.cell_m, z = (double(cell.y) + unit(h, 2)) * r.cell_m;
         const GroundSample g = ground(x, z);
         if (!g.valid || g.height_m < r.height_min_m || g.height_m > r.height_max_m || g.slope > r.slope_max ||
@@ -56,5 +51,28 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
         for (int i = min_cell.x; i <= max_cell.x; ++i) scatterCell(r, {i, k}, ground, out);
     return out;
 }
+
+std::vector<ObjectPlacement> placeObjects(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area) {
+    std::vector<ObjectPlacement> out;
+    for (const NamedObject& o : s.objects) {
+        PlacedObject p;
+        p.position = o.object.position;
+        if (o.object.ground_m >= 0.0f) {
+            const GroundSample g = ground ? ground(p.position.x, p.position.z) : GroundSample{};
+            p.position.y = (g.valid ? g.height_m : 0.0) + o.object.ground_m;
+        }
+        p.yaw_rad = float(glm::radians(double(o.object.yaw_deg)));
+        p.scale = o.object.scale;
+        out.push_back({"object." + o.name, {o.object.file}, {p}});
+    }
+    for (const NamedScatter& sc : s.scatters) {
+        ObjectPlacement& placement = out.emplace_back(ObjectPlacement{"scatter." + sc.name, sc.rule.files, {}});
+        if (!ground || area.max.x <= area.min.x) continue;  // scatter needs a terrain
+        placement.instances = scatterRegion(sc.rule, scatterCellOf(sc.rule, area.min), scatterCellOf(sc.rule, area.max), ground);
+    }
+    return out;
+}
+
+bool samePlacement(const ObjectsSettings& a, const ObjectsSettings& b) { return a.objects == b.objects && a.scatters == b.scatters; }
 
 }  // namespace vista

@@ -4,13 +4,14 @@
 // and candidate j takes its position, model, yaw and scale from a hash of (i, k, j, seed). A
 // candidate stays where the ground allows it (height range, slope, grass weight). So a cell
 // always holds the same instances, whichever cells are placed with it and in whatever order:
-// moving away and back gives the same forest (tested).
+// moving away and back gives the same forest (tested). placeObjects() places every list entry of
+// [objects]; renderer/meshes/objects.h draws what it gives (the app wires the two).
 #pragma once
 
+#include "renderer/meshes/placed_objects.h"
 #include "terrain/scatter/object_settings.h"
 
 #include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -26,12 +27,9 @@ struct GroundSample {
 };
 using GroundFunction = std::function<GroundSample(double x, double z)>;
 
-struct PlacedObject {
-    glm::dvec3 position{0.0};  // world, m (on the ground)
-    float yaw_rad = 0.0f;
-    float scale = 1.0f;
-    int file = 0;  // index into the rule's files
-    bool operator==(const PlacedObject&) const = default;
+// The world area scatter rules cover: [min, max] in x and z (the terrain's extent).
+struct ScatterArea {
+    glm::dvec2 min{0.0}, max{0.0};
 };
 
 // The world cell holding point xz for rule r.
@@ -43,5 +41,12 @@ void scatterCell(const ScatterRule& r, glm::ivec2 cell, const GroundFunction& gr
 // Every cell in [min_cell, max_cell] (inclusive), row by row.
 std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cell, glm::ivec2 max_cell,
                                         const GroundFunction& ground);
+
+// What s's lists place, one ObjectPlacement per entry in file order: each object.NAME (on the
+// ground when it asks, ground may be empty), then each scatter.NAME over area (its files, no
+// instances without a ground or an area). PlacedObject::file indexes the entry's files.
+std::vector<ObjectPlacement> placeObjects(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area);
+// Whether a and b place the same (their lists are equal): placeObjects() need not run again.
+bool samePlacement(const ObjectsSettings& a, const ObjectsSettings& b);
 
 }  // namespace vista

@@ -276,27 +276,15 @@ TextureHandle Water::addVelocityPass(FrameGraph& graph, const RenderContext& rc,
 }
 
 void Water::addUnderwaterPass(FrameGraph& graph, const RenderContext& rc, SceneTargets& targets) {
-    struct Data {
-        TextureHandle depth, hdr;
-    };
-    const Data& d = graph.addPass<Data>("water.underwater",
-        [&](PassBuilder& b, Data& data) {
-            data.depth = b.read(targets.depth);
-            data.hdr = b.write(targets.hdr);
-        },
-        [this, &rc](const Data& data, PassContext& ctx) {
-            const TextureDesc& desc = ctx.desc(data.hdr);
-            bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id(kUnderwaterProgram));
-            glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
-            glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // hdr = in-scattering + hdr * transmittance
-            drawFullscreen(rc);
-            glDisable(GL_BLEND);
-            glBlendFunc(GL_ONE, GL_ZERO);  // Mesa refuses multi-target draws while a dual-source factor is set
-        });
-    targets.hdr = d.hdr;
+    addOverHdrPass(graph, rc, "water.underwater", targets, [this, &rc] {
+        glUseProgram(rc.shaders.id(kUnderwaterProgram));
+        glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, uniforms_.id());
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // hdr = in-scattering + hdr * transmittance
+        drawFullscreen(rc);
+        glDisable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ZERO);  // Mesa refuses multi-target draws while a dual-source factor is set
+    });
 }
 
 ProgramList waterPrograms() {

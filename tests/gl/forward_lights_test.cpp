@@ -33,29 +33,7 @@ FrameRenderer& renderer() { return test::fileRenderer(); }
 constexpr float kSeaLevelM = 30.0f;
 
 // A 40 x 20 m double-sided pane in the model's x-y plane (facing +z), BLEND, pale at alpha 0.5.
-Model widePane() {
-    Model m;
-    m.name = "wide pane";
-    for (int c = 0; c < 4; ++c) {
-        MeshVertex v;
-        v.uv = glm::vec2(float(c == 1 || c == 2), float(c >= 2));
-        v.position = glm::vec3(v.uv.x * 40.0f - 20.0f, v.uv.y * 20.0f, 0.0f);
-        v.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-        m.vertices.push_back(v);
-    }
-    m.indices = {0, 1, 2, 0, 2, 3};
-    ModelMaterial mat;
-    mat.base_color = glm::vec4(0.8f, 0.85f, 0.9f, 0.5f);
-    mat.metallic = 0.0f;
-    mat.roughness = 0.6f;
-    mat.alpha_mode = AlphaMode::Blend;
-    mat.double_sided = true;
-    m.materials = {mat};
-    m.lods = {ModelLod{{ModelPrimitive{0, 6, 0}}}};
-    m.bounds_min = glm::vec3(-20.0f, 0.0f, 0.0f);
-    m.bounds_max = glm::vec3(20.0f, 20.0f, 0.0f);
-    return m;
-}
+Model widePane() { return test::paneModel("wide pane", 40.0f, 20.0f, {0.8f, 0.85f, 0.9f, 0.5f}, 0.6f, AlphaMode::Blend); }
 
 void addVolume(Settings& s, const std::string& name, const std::string& spec) {
     NamedLightVolume v{name, {}};

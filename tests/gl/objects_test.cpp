@@ -323,27 +323,7 @@ namespace {
 // A 2 x 2 m double-sided pane in the model's x-y plane (x -1..1, y 0..2), the given colour,
 // BLEND at alpha 0.5 or opaque.
 Model pane(glm::vec3 colour, AlphaMode mode = AlphaMode::Blend) {
-    Model m;
-    m.name = "pane";
-    for (int c = 0; c < 4; ++c) {
-        MeshVertex v;
-        v.uv = glm::vec2(float(c == 1 || c == 2), float(c >= 2));
-        v.position = glm::vec3(v.uv.x * 2.0f - 1.0f, v.uv.y * 2.0f, 0.0f);
-        v.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-        m.vertices.push_back(v);
-    }
-    m.indices = {0, 1, 2, 0, 2, 3};
-    ModelMaterial mat;
-    mat.base_color = glm::vec4(colour, mode == AlphaMode::Blend ? 0.5f : 1.0f);
-    mat.metallic = 0.0f;
-    mat.roughness = 0.8f;
-    mat.alpha_mode = mode;
-    mat.double_sided = true;
-    m.materials = {mat};
-    m.lods = {ModelLod{{ModelPrimitive{0, 6, 0}}}};
-    m.bounds_min = glm::vec3(-1.0f, 0.0f, 0.0f);
-    m.bounds_max = glm::vec3(1.0f, 2.0f, 0.0f);
-    return m;
+    return test::paneModel("pane", 2.0f, 2.0f, glm::vec4(colour, mode == AlphaMode::Blend ? 0.5f : 1.0f), 0.8f, mode);
 }
 
 Settings paneScene(const std::filesystem::path& map) {

@@ -104,5 +104,32 @@ void adoptTerrain(FrameRenderer& r, const TerrainSettings& terrain, int n, Heigh
     r.adoptTerrain(std::move(made));
 }
 
+// A width x height m double-sided pane in the model's x-y plane facing +z (x centred, y from 0),
+// one non-metallic material: base (colour and alpha), roughness and alpha mode.
+[[maybe_unused]] Model paneModel(const char* name, float width, float height, glm::vec4 base, float roughness,
+                                 AlphaMode mode) {
+    Model m;
+    m.name = name;
+    for (int c = 0; c < 4; ++c) {
+        MeshVertex v;
+        v.uv = glm::vec2(float(c == 1 || c == 2), float(c >= 2));
+        v.position = glm::vec3((v.uv.x - 0.5f) * width, v.uv.y * height, 0.0f);
+        v.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        m.vertices.push_back(v);
+    }
+    m.indices = {0, 1, 2, 0, 2, 3};
+    ModelMaterial mat;
+    mat.base_color = base;
+    mat.metallic = 0.0f;
+    mat.roughness = roughness;
+    mat.alpha_mode = mode;
+    mat.double_sided = true;
+    m.materials = {mat};
+    m.lods = {ModelLod{{ModelPrimitive{0, 6, 0}}}};
+    m.bounds_min = glm::vec3(-0.5f * width, 0.0f, 0.0f);
+    m.bounds_max = glm::vec3(0.5f * width, height, 0.0f);
+    return m;
+}
+
 }  // namespace
 }  // namespace vista::test

@@ -87,6 +87,34 @@ bool anyWater(const std::vector<std::string>& v) {
     return std::any_of(v.begin(), v.end(), [](const std::string& n) { return n.rfind("water.", 0) == 0; });
 }
 
+// n probe points on a spiral out from the eye, d = 0.5 + step_m * i: (x, z) offsets in m and a
+// footprint (0 for every third) in z.
+std::vector<glm::vec4> spiralPoints(int n, double step_m) {
+    std::vector<glm::vec4> points;
+    for (int i = 0; i < n; ++i) {
+        const double a = 0.37 * i, d = 0.5 + step_m * i;
+        const float footprint = i % 3 == 0 ? 0.0f : 0.02f * float(i % 7);
+        points.emplace_back(float(d * std::cos(a)), float(d * std::sin(a)), footprint, 0.0f);
+    }
+    return points;
+}
+
+// The probe program (tests/gl/shaders/water_probe.glsl) at points: three vec4 per point
+// (displacement, normal, previous frame's displacement).
+std::vector<glm::vec4> probeWaves(const Water& water, GLuint program, const std::vector<glm::vec4>& points) {
+    gl::Buffer in = gl::Buffer::create(GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0, "probe points");
+    gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 3 * sizeof(glm::vec4)), nullptr, 0, "probe results");
+    glUseProgram(program);
+    glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, water.uniformBuffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, out.id());
+    glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<glm::vec4> results(points.size() * 3);
+    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)), results.data());
+    return results;
+}
+
 }  // namespace
 
 TEST_CASE("gl: water passes run between the lighting and the aerial perspective, off, no pass and no water") {
@@ -201,22 +229,8 @@ TEST_CASE("gl: water waves on the GPU equal the CPU's double-precision mirror (a
         render(s, view, t);
         REQUIRE(r.water());
         const WaveSet& waves = r.water()->waves();
-        std::vector<glm::vec4> points;
-        for (int i = 0; i < 256; ++i) {
-            const double a = 0.37 * i, d = 0.5 + 2.0 * i;  // a spiral out to ~500 m
-            const float footprint = i % 3 == 0 ? 0.0f : 0.02f * float(i % 7);
-            points.emplace_back(float(d * std::cos(a)), float(d * std::sin(a)), footprint, 0.0f);
-        }
-        gl::Buffer in = gl::Buffer::create(GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0, "probe points");
-        gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 3 * sizeof(glm::vec4)), nullptr, 0, "probe results");
-        glUseProgram(program->id());
-        glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, r.water()->uniformBuffer());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, in.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, out.id());
-        glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<glm::vec4> results(points.size() * 3);
-        glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)), results.data());
+        const std::vector<glm::vec4> points = spiralPoints(256, 2.0);  // out to ~500 m
+        const std::vector<glm::vec4> results = probeWaves(*r.water(), program->id(), points);
         double worst_d = 0.0, worst_n = 0.0, worst_j = 0.0, worst_v = 0.0;
         for (std::size_t i = 0; i < points.size(); ++i) {
             const glm::dvec2 x0 = glm::dvec2(eye.x, eye.z) + glm::dvec2(points[i].x, points[i].y);
@@ -327,21 +341,8 @@ TEST_CASE("gl: the sea writes its waves' own motion into the motion vectors, as 
         const WaveSet& waves = r.water()->waves();
 
         // The probe: previousDisplacement against the CPU at t - dt.
-        std::vector<glm::vec4> points;
-        for (int i = 0; i < 128; ++i) {
-            const double a = 0.37 * i, d = 0.5 + 3.0 * i;
-            points.emplace_back(float(d * std::cos(a)), float(d * std::sin(a)), i % 3 == 0 ? 0.0f : 0.02f * float(i % 7), 0.0f);
-        }
-        gl::Buffer in = gl::Buffer::create(GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), 0, "probe points");
-        gl::Buffer out = gl::Buffer::create(GLsizeiptr(points.size() * 3 * sizeof(glm::vec4)), nullptr, 0, "probe results");
-        glUseProgram(program->id());
-        glBindBufferBase(GL_UNIFORM_BUFFER, WATER_BINDING_UNIFORMS, r.water()->uniformBuffer());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kAux, in.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kCounters, out.id());
-        glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<glm::vec4> results(points.size() * 3);
-        glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(results.size() * sizeof(glm::vec4)), results.data());
+        const std::vector<glm::vec4> points = spiralPoints(128, 3.0);
+        const std::vector<glm::vec4> results = probeWaves(*r.water(), program->id(), points);
         double worst_prev = 0.0, largest_step = 0.0;
         for (std::size_t i = 0; i < points.size(); ++i) {
             const glm::dvec2 x0 = glm::dvec2(eye.x, eye.z) + glm::dvec2(points[i].x, points[i].y);

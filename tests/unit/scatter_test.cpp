@@ -147,3 +147,40 @@ TEST_CASE("scatter: density per m^2 on average, and the ground limits hold") {
     // Outside the terrain nothing stands.
     CHECK(scatterRegion(r, {1000, 1000}, {1004, 1004}, hills).empty());
 }
+
+TEST_CASE("scatter: placeObjects gives each list entry's instances in file order, for the drawing to load") {
+    Settings s;
+    REQUIRE(messages(loadIniString("[objects]\nobject.mill = data/props/house.glb 10 5 20  ground 0.5  yaw 90  scale 1.5\n"
+                                   "object.hut = data/props/house.glb -10 7 -20\n"
+                                   "scatter.woods = tree.glb rock.glb  density 0.01  cell 32  seed 9\n",
+                                   "scene.ini", s)) == "");
+    const ScatterArea area{{-128.0, -128.0}, {127.0, 127.0}};
+    const std::vector<ObjectPlacement> placed = placeObjects(s.objects, hills, area);
+    REQUIRE(placed.size() == 3);
+    CHECK(placed[0].entry == "object.mill");
+    CHECK(placed[0].files == std::vector<std::string>{"data/props/house.glb"});
+    REQUIRE(placed[0].instances.size() == 1);
+    const PlacedObject& mill = placed[0].instances[0];
+    CHECK(mill.position == glm::dvec3(10.0, hills(10.0, 20.0).height_m + 0.5, 20.0));  // on the ground
+    CHECK(mill.yaw_rad == doctest::Approx(1.5707963));
+    CHECK(mill.scale == 1.5f);
+    CHECK(mill.file == 0);
+    REQUIRE(placed[1].instances.size() == 1);
+    CHECK(placed[1].instances[0].position == glm::dvec3(-10.0, 7.0, -20.0));  // no ground: as given
+    CHECK(placed[2].entry == "scatter.woods");
+    CHECK(placed[2].files == std::vector<std::string>{"tree.glb", "rock.glb"});
+    const ScatterRule& r = s.objects.scatters[0].rule;
+    CHECK(placed[2].instances == scatterRegion(r, scatterCellOf(r, area.min), scatterCellOf(r, area.max), hills));
+    CHECK(!placed[2].instances.empty());
+    // Without a ground the rules place nothing but keep their files (the models still load).
+    const std::vector<ObjectPlacement> bare = placeObjects(s.objects, {}, area);
+    CHECK(bare[2].files.size() == 2);
+    CHECK(bare[2].instances.empty());
+    CHECK(bare[0].instances[0].position.y == 0.5);
+    // The same lists place the same; the drawing settings do not matter.
+    Settings t = s;
+    t.objects.lod1_distance_m = 5.0f;
+    CHECK(samePlacement(s.objects, t.objects));
+    t.objects.scatters[0].rule.seed = 10;
+    CHECK(!samePlacement(s.objects, t.objects));
+}

@@ -1,6 +1,6 @@
-// The shadow debug views' uniforms (shadows.view, shadows.spot_view, shadows.point_view): the
-// shadow passes fill them, shadow_view.glsl, spot_atlas_view.glsl and point_shadow_view.glsl read them.
-// Guarded: three C++ files of one unity batch include it.
+// The shadow debug views' uniforms (shadows.view, shadows.spot_view, shadows.point_view):
+// renderer/shadows/shadow_view.cpp fills them, shadow_view.glsl, spot_atlas_view.glsl and
+// point_shadow_view.glsl read them.
 #ifndef SHADOW_VIEW_BLOCK_GLSL
 #define SHADOW_VIEW_BLOCK_GLSL
 #include "../../shaders/pass_block.glsl"
