@@ -820,7 +820,10 @@ void FrameRenderer::addTemporalPasses(FrameGraph& graph, const Frame& f, const C
         scene.hdr = taa_.use().addPass(graph, f.rc, scene.hdr, scene.depth, velocity, f.s.taa, f.cut);
         report.counters["postfx.taa.history_frames"] = double(taa_->historyFrames());
     }
-    if (f.clouds) report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
+    if (f.clouds) {
+        report.counters["clouds.history_frames"] = double(clouds_->historyFrames());
+        report.counters["clouds.marched_pixels"] = double(clouds_->marchedPixels());  // of the cloud target, this frame
+    }
     report.counters["temporal.cut"] = f.cut ? 1.0 : 0.0;
 }
 

@@ -31,27 +31,7 @@ vec3 fromYCoCg(vec3 c) {
     return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z);
 }
 
-// Catmull-Rom history fetch with 5 bilinear taps (the corners of the 4x4 kernel dropped;
-// Jimenez 2016, MJP's "SampleTextureCatmullRom").
-vec3 historyCatmullRom(vec2 uv, vec2 size) {
-    vec2 pos = uv * size;
-    vec2 centre = floor(pos - 0.5) + 0.5;
-    vec2 f = pos - centre;
-    vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
-    vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
-    vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
-    vec2 w3 = f * f * (-0.5 + 0.5 * f);
-    vec2 w12 = w1 + w2;
-    vec2 t0 = (centre - 1.0) / size, t3 = (centre + 2.0) / size;
-    vec2 t12 = (centre + w2 / w12) / size;
-    vec3 c = texture(u_history, vec2(t12.x, t0.y)).rgb * (w12.x * w0.y) +
-             texture(u_history, vec2(t0.x, t12.y)).rgb * (w0.x * w12.y) +
-             texture(u_history, t12).rgb * (w12.x * w12.y) +
-             texture(u_history, vec2(t3.x, t12.y)).rgb * (w3.x * w12.y) +
-             texture(u_history, vec2(t12.x, t3.y)).rgb * (w12.x * w3.y);
-    float w = w12.x * w0.y + w0.x * w12.y + w12.x * w12.y + w3.x * w12.y + w12.x * w3.y;
-    return max(c / w, vec3(0.0));
-}
+#include "../../renderer/shaders/catmull_rom.glsl"
 
 // Clips c towards the box's centre onto the box (Playdead): keeps the hue of the history.
 vec3 clipToBox(vec3 c, vec3 lo, vec3 hi) {
@@ -105,7 +85,7 @@ void main() {
     }
     vec3 result = current, display = current;
     if (valid) {
-        vec3 history = historyCatmullRom(uv, size);
+        vec3 history = textureCatmullRom(u_history, uv, size).rgb;
         vec3 clipped = fromYCoCg(clipToBox(toYCoCg(history), lo, hi));
         result = mix(clipped, current, u_params.x);
         // Unsharp mask of the history against its bilinear fetch, limited to the neighbourhood.

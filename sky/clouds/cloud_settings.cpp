@@ -39,7 +39,9 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
     v.field({"temporal_blend", "", "share of this frame's march once the history is full (1: no history)"}, s.temporal_blend, 0.01f, 1.0f);
     v.field({"march_subset", "",
              "with temporal: march 1 pixel of every march_subset per frame, in a Bayer order (1: every pixel, 4: 1 of 2x2, "
-             "16: 1 of 4x4; other values round down to these); clouds.temporal reprojects the rest"},
+             "16: 1 of 4x4; other values round down to these); clouds.temporal reprojects the rest; a frame without "
+             "history marches every pixel; what comes into view is upsampled until each pixel's turn (counter "
+             "clouds.marched_pixels)"},
             s.march_subset, 1, 16);
     v.field({"shadows", "", "cloud shadows on the terrain (clouds.shadow)"}, s.shadows);
     v.field({"shadow_size", "texels", "shadow map texels per side"}, s.shadow_size, 16, 2048);

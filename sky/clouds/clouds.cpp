@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 namespace vista {
@@ -37,7 +38,10 @@ ProgramList cloudPrograms() {
             {"sky/clouds/shaders/clouds.glsl", {"HALF_RES"}},
             {"sky/clouds/shaders/clouds.glsl", {"TEMPORAL"}},
             {"sky/clouds/shaders/clouds.glsl", {"HALF_RES", "TEMPORAL"}},
+            {"sky/clouds/shaders/clouds.glsl", {"TEMPORAL", "SUBSET"}},
+            {"sky/clouds/shaders/clouds.glsl", {"HALF_RES", "TEMPORAL", "SUBSET"}},
             {"sky/clouds/shaders/clouds_temporal.glsl", {}},
+            {"sky/clouds/shaders/clouds_temporal.glsl", {"SUBSET"}},
             {"sky/clouds/shaders/clouds_composite.glsl", {}},
             {"sky/clouds/shaders/cloud_shadow.glsl", {}}};
 }
@@ -81,7 +85,7 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     const double slant = std::max(sun.y, 0.05);
     temporal_ = clouds.temporal && clouds.temporal_blend < 1.0f;
     subset_stride_ = temporal_ ? cloudSubsetStride(clouds.march_subset) : 1;
-    g.count = glm::ivec4(n, clouds.light_samples, subset_stride_, 0);
+    g.count = glm::ivec4(n, clouds.light_samples, subset_stride_, subset_stride_);
     g.planet = glm::vec4(float(ground_r), float(ground_r + altitude), clouds.max_distance_km * 1e3f, clouds.phase_g);
     g.ambient = glm::vec4(glm::vec3(sky_irradiance_up / std::numbers::pi) * clouds.ambient, 0.0f);
     // The shadow map's centre: where the sun's ray through the camera meets y = 0, snapped to
@@ -140,12 +144,23 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
     const TextureDesc cloud_desc = half ? TextureDesc{(rc.view.width + 1) / 2, (rc.view.height + 1) / 2, PixelFormat::RGBA16F}
                                         : TextureDesc{rc.view.width, rc.view.height, PixelFormat::RGBA16F};
     // A subset march (clouds_subset.glsl) writes one texel per stride x stride block of cloud_desc.
-    const int stride = subset_stride_;
+    // A frame without usable history (the first, after a cut or a resize) marches every pixel, so
+    // it is as clean as a frame without the subset march, not an upsampled 1/stride^2 of it.
+    const bool history_usable = temporal && history_valid_ && !cut && history_[0].width() == cloud_desc.width &&
+                                history_[0].height() == cloud_desc.height;
+    frame_stride_ = history_usable ? subset_stride_ : 1;
+    if (frame_stride_ != subset_stride_) {
+        const GLint stride_1 = 1;
+        glNamedBufferSubData(uniforms_.id(), offsetof(Gpu, count) + 2 * sizeof(GLint), sizeof stride_1, &stride_1);
+    }
+    const int stride = frame_stride_;
     const TextureDesc march_desc{(cloud_desc.width + stride - 1) / stride, (cloud_desc.height + stride - 1) / stride,
                                  PixelFormat::RGBA16F};
+    marched_pixels_ = (long long)(march_desc.width) * march_desc.height;
     std::vector<std::string> defines;
     if (half) defines.push_back("HALF_RES");
     if (temporal) defines.push_back("TEMPORAL");
+    if (stride > 1) defines.push_back("SUBSET");
     const Data& d = graph.addPass<Data>("clouds.shell",
         [&](PassBuilder& b, Data& data) {
             data.transmittance = b.read(transmittance);
@@ -237,7 +252,7 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
     history_frames_ = history ? std::min(history_frames_ + 1, int(std::lround(1.0 / temporal_blend_))) : 1;
     const CloudsTemporalBlock block{
         glm::mat4(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0)),
-        glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), float(subset_stride_)),
+        glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), float(frame_stride_)),
         glm::vec4(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y)};
     history_view_ = rc.view;
     history_valid_ = true;
@@ -262,10 +277,11 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
             d.out = b.write(h_out);
             d.out_distance = b.write(hd_out);
         },
-        [&rc, block](const Data& d, PassContext& ctx) {
+        [&rc, block, subset = frame_stride_ > 1](const Data& d, PassContext& ctx) {
             const TextureDesc& out = ctx.desc(d.out);
             bindTarget(rc.device.framebuffer({ctx.texture(d.out), ctx.texture(d.out_distance)}), out.width, out.height);
-            const GLuint program = rc.shaders.id("sky/clouds/shaders/clouds_temporal.glsl");
+            const GLuint program = subset ? rc.shaders.id("sky/clouds/shaders/clouds_temporal.glsl", {"SUBSET"})
+                                          : rc.shaders.id("sky/clouds/shaders/clouds_temporal.glsl");
             glUseProgram(program);
             bindPassBlock(rc, program, block);
             const GLuint history = ctx.texture(d.history);

@@ -58,6 +58,9 @@ public:
     void resetHistory() { history_valid_ = false; }
     // Frames accumulated in the history at most (0: none yet), for the clouds.history_frames counter.
     int historyFrames() const { return history_valid_ ? history_frames_ : 0; }
+    // Pixels of the cloud target the last shell pass marched (all of them, or one per block of a
+    // subset march).
+    long long marchedPixels() const { return marched_pixels_; }
 
 private:
     struct Gpu;
@@ -74,6 +77,8 @@ private:
     // Temporal accumulation: colour (RGBA16F) and distance (km) + frames (RG16F), ping-ponged.
     bool temporal_ = true;
     int subset_stride_ = 1;  // cloudSubsetStride([clouds] march_subset) with temporal, else 1
+    long long marched_pixels_ = 0;
+    int frame_stride_ = 1;   // this frame's: subset_stride_, or 1 on a frame without usable history
     float temporal_blend_ = 0.0625f;
     gl::Texture history_[2], history_distance_[2];
     int history_current_ = 0;

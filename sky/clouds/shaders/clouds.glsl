@@ -12,9 +12,10 @@
 // of its own, plus the clouds' mean distance (attachment 1) along which clouds_temporal.glsl
 // reprojects the history. The start offset is spatiotemporal blue noise, so the error of one
 // frame is fine-grained and a pixel's offsets over frames are evenly spread (accumulated by
-// "clouds.temporal"). With a march subset (c_count.z = stride > 1, clouds_subset.glsl) the target is
+// "clouds.temporal"). Variant SUBSET, the subset march (c_count.z = stride > 1, clouds_subset.glsl): the target is
 // 1/stride of the cloud target's size and each texel marches the pixel of its block that this frame
 // stands for; the blue-noise index then counts that pixel's own visits (every stride^2 frames).
+// A frame without history marches every pixel even so (c_count.z = 1, c_count.w = stride).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -25,7 +26,9 @@
 #include "../../shaders/atmosphere.glsl"
 #include "clouds_common.glsl"
 #include "../../../renderer/shaders/blue_noise.glsl"
+#ifdef SUBSET
 #include "clouds_subset.glsl"
+#endif
 layout(binding = BINDING_TEX_1) uniform sampler2D u_depth;
 in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
@@ -65,18 +68,24 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec2 uv = v_uv;
     uint noise_frame = uint(u_time.z);
+#ifdef SUBSET
     int stride = c_count.z;
-    if (stride > 1) {
 #ifdef HALF_RES
-        ivec2 size = (textureSize(u_depth, 0) + 1) / 2;
+    ivec2 size = (textureSize(u_depth, 0) + 1) / 2;
 #else
-        ivec2 size = textureSize(u_depth, 0);
+    ivec2 size = textureSize(u_depth, 0);
 #endif
-        pixel = pixel * stride + cloudSubsetOffset(stride, noise_frame);
-        if (any(greaterThanEqual(pixel, size))) discard;
-        uv = (vec2(pixel) + 0.5) / vec2(size);
-        noise_frame /= uint(stride * stride);
+    pixel = pixel * stride + cloudSubsetOffset(stride, noise_frame);
+    if (any(greaterThanEqual(pixel, size))) discard;
+    uv = (vec2(pixel) + 0.5) / vec2(size);
+    noise_frame /= uint(stride * stride);
+#else
+    if (c_count.w > 1) {
+        // A whole march of a subset configuration (a frame without history): the visit before
+        // every pixel's first subset visit, so no two visits of a pixel share a noise frame.
+        noise_frame = noise_frame / uint(c_count.w * c_count.w) - 1u;
     }
+#endif
     vec3 dir = viewRay(uv);
     vec3 sun = a_sun.xyz;
     float rc = c_planet.y, mu = clamp(dir.y, -1.0, 1.0);
