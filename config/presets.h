@@ -34,6 +34,9 @@ struct QualityKnob {
     const char* special_zero = nullptr;  // label of value 0, if it has one
     bool flag = false;                   // 0/1 knob
     bool descending = false;             // finer at lower values (error thresholds, half-resolution flags)
+    // Not finer with the level: a cost the preset trades against its other knobs (the cloud march
+    // subset, whose saving high and ultra spend on a finer march).
+    bool trade = false;
 
     void apply(Settings& s, double value, const Settings& scene) const;
     double get(const Settings& s) const;

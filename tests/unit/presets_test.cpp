@@ -61,7 +61,7 @@ TEST_CASE("presets: every knob of the table grows finer with the level, and get 
             CHECK(k.get(one) == doctest::Approx(k.levels[std::size_t(i)]));
             Settings back;
             CHECK(loadIniString(saveIniString(one), "knob.ini", back).empty());
-            if (i > 0) {
+            if (i > 0 && !k.trade) {
                 if (k.descending)
                     CHECK(k.levels[std::size_t(i)] <= k.levels[std::size_t(i - 1)]);
                 else
