@@ -140,11 +140,11 @@ const QualityKnob kKnobs[] = {
     // Clouds: ray marching, self-shadowing, their shadow map and the noise detail per layer.
     // Reference: 8 octaves and full resolution; light samples, steps and the shadow map not the maximum.
     // High and ultra march 1 of 16 pixels a frame ([clouds] march_subset, docs/temporal.md) and
-    // spend the 16x saved on the reference's march (8 octaves, 32/16 steps, 8 light samples);
+    // spend the 16x saved on the reference's march (full size, 8 octaves, 32/16 steps, 8 light samples);
     // low and medium march their cheaper, noisier march at every pixel (a subset of it would
     // stay grainy in motion), the reference every pixel of its own.
     {"clouds.march_subset", "pixels", {1, 1, 16, 16, 1}, cloudsOn, nullptr, nullptr, nullptr, false, true, true},
-    {"clouds.half_resolution", "", {1, 1, 1, 1, 0}, cloudsOn, nullptr, nullptr, nullptr, true, true},
+    {"clouds.half_resolution", "", {1, 1, 0, 0, 0}, cloudsOn, nullptr, nullptr, nullptr, true, true},
     {"clouds.light_samples", "samples", {1, 2, 8, 8, 8}, cloudsOn},
     {"clouds.shadow_size", "texels", {128, 256, 256, 512, 1024}, cloudShadowsOn},
     {"clouds.low.octaves", "", {4, 4, 8, 8, 8}, lowCloudsOn},

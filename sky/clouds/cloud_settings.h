@@ -32,7 +32,7 @@ struct CloudsSettings {
     float phase_g = 0.6f;            //!< forward-scattering asymmetry of the HG phase, 0..0.95
     float ambient = 1.0f;            //!< scale of the sky's ambient light on the clouds, 0..10
     float max_distance_km = 160.0f;  //!< km, clouds fade out towards this distance along the view, 1..2000
-    bool half_resolution = true;     //!< march at half size ("clouds.half"), upsampled by "clouds.composite"
+    bool half_resolution = false;    //!< march at half size ("clouds.half"), upsampled by "clouds.composite"
     float coverage_variation = 0.1f; //!< coverage of every layer swings by +-this over coverage_period_s, 0..1
     float coverage_period_s = 1800.0f; //!< s, period of the coverage swing, 1..1e7
     bool temporal = true;            //!< accumulate the march over frames ("clouds.temporal", docs/temporal.md)
