@@ -10,10 +10,12 @@
 #include "app/progress.h"
 #include "app/scene.h"
 #include "app/video.h"
+#include "renderer/temporal.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <unistd.h>
 
 namespace vista {
@@ -208,13 +210,27 @@ CaptureResult runCapture(const CaptureJob& job) {
     std::string dot;  // the last frame's graph, with --dot
     // Settle frames render exactly as written frames do (same request, read back and all), so
     // the temporal state they leave is the state a sequential run has at that frame.
-    auto renderFrame = [&](int frame, bool last) {
-        const double t = captureFrameTime(path.startTime(), frame, double(c.fps));
-        CameraPose pose = path.sample(t);
-        ViewParams view{pose.position, pose.yaw_deg, pose.pitch_deg, pose.fov_deg, s.camera.near_m, c.width, c.height};
+    auto viewAt = [&](int frame) {
+        const CameraPose pose = path.sample(captureFrameTime(path.startTime(), frame, double(c.fps)));
+        return ViewParams{pose.position, pose.yaw_deg, pose.pitch_deg, pose.fov_deg, s.camera.near_m, c.width, c.height};
+    };
+    // sequence: the jitter and blue-noise index (default: the path frame, not the run's count).
+    auto renderFrame = [&](int frame, bool last, std::optional<int> sequence = std::nullopt) {
         request.graph_dot = last && !job.dot_file.empty() ? &dot : nullptr;
-        request.sequence_frame = frame;  // the jitter and blue noise follow the path frame, not the run
-        return renderer.render(s, view, t, request);
+        request.sequence_frame = sequence.value_or(frame);
+        return renderer.render(s, viewAt(frame), captureFrameTime(path.startTime(), frame, double(c.fps)), request);
+    };
+    // A written frame the camera cuts to (TAA's cut thresholds) has no history. Before it,
+    // [capture] cut_settle_frames unwritten frames at its own pose and time (indexed as the path
+    // frames before it, so jitter and blue noise move) build one; the time standing still, the
+    // exposure keeps what the frames before the cut adapted it to. Decided by the path alone, so a
+    // shard renders the same frames.
+    const int cut_settle = job.write_images ? c.cut_settle_frames : 0;
+    auto settleAfterCut = [&](int frame) {
+        if (cut_settle <= 0 || !cameraCut(viewAt(frame - 1), viewAt(frame), s.taa.cut_distance_m, s.taa.cut_angle_deg))
+            return 0;
+        for (int k = frame - cut_settle; k < frame; ++k) renderFrame(frame, false, k);
+        return cut_settle;
     };
     auto flushStats = [&](bool wait) {
         stats.addTimings(renderer.timers().collect(wait));
@@ -248,6 +264,11 @@ CaptureResult runCapture(const CaptureJob& job) {
         result.settle_frames += settle;
 
         for (int frame = run.first; frame < run.end; ++frame) {
+            const auto cut_start = std::chrono::steady_clock::now();
+            if (const int n = settleAfterCut(frame); n > 0) {
+                manifest.settle_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cut_start).count();
+                result.settle_frames += n;
+            }
             const auto start = std::chrono::steady_clock::now();
             const std::uint64_t index = renderer.frameIndex();
             FrameReport report = renderFrame(frame, &run == &runs.back() && frame + 1 == run.end);

@@ -39,7 +39,8 @@ struct CaptureResult {
 // Renders the selected frames. Before the first frame of each run of consecutive written frames
 // it calls FrameRenderer::resetHistory() and renders [capture] settle_frames unwritten frames at
 // the path times of the frames before it (clamped to the path's start), so frame k is the same
-// whichever run renders it. Writing images, it keeps the run's manifest (shard.h) up to date
+// whichever run renders it; before a written frame the camera cuts to, [capture] cut_settle_frames
+// unwritten frames at that frame's own pose and time. Writing images, it keeps the run's manifest (shard.h) up to date
 // after every frame, and with [capture] format mp4 and the whole path selected, it encodes the
 // video out/capture.mp4 at the end.
 CaptureResult runCapture(const CaptureJob& job);

@@ -64,6 +64,7 @@ struct CaptureSettings {
     ImageFormat format = ImageFormat::Png;
     std::string out = "out";                       //!< output directory
     int settle_frames = 8;                         //!< unwritten frames before a run's first written frame, 0..10000
+    int cut_settle_frames = 8;                     //!< unwritten frames at a cut-to frame's own pose and time, 0..10000
     int crf = 18;                                  //!< H.264 constant rate factor of mp4 output, 0 (lossless)..51
 };
 
