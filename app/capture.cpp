@@ -225,7 +225,10 @@ CaptureResult runCapture(const CaptureJob& job) {
     // frames before it, so jitter and blue noise move) build one; the time standing still, the
     // exposure keeps what the frames before the cut adapted it to. Decided by the path alone, so a
     // shard renders the same frames.
-    const int cut_settle = job.write_images ? c.cut_settle_frames : 0;
+    // Only where there is a history to build (TAA or the clouds' accumulation): without one the
+    // frames would change nothing but the exposure's last steps, and shards stay bit-identical.
+    const bool history = (s.taa.enabled && s.postfx.enabled) || s.clouds.temporal;
+    const int cut_settle = job.write_images && history ? c.cut_settle_frames : 0;
     auto settleAfterCut = [&](int frame) {
         if (cut_settle <= 0 || !cameraCut(viewAt(frame - 1), viewAt(frame), s.taa.cut_distance_m, s.taa.cut_angle_deg))
             return 0;

@@ -54,7 +54,7 @@ void describe(SettingsVisitor& v, CaptureSettings& s) {
     v.field({"cut_settle_frames", "frames",
              "frames rendered but not written at the pose and time of a written frame the camera cuts to ([postfx.taa] "
              "cut_distance_m, cut_angle_deg; e.g. every frame of a path sampled seconds apart), so its history (TAA, "
-             "temporal clouds) is built as after settle_frames; 0: such a frame is one history-free frame"},
+             "temporal clouds; none rendered when both are off) is built as after settle_frames; 0: such a frame is one history-free frame"},
             s.cut_settle_frames, 0, 10000);
     v.field({"crf", "", "H.264 constant rate factor of mp4 output: 0 lossless, 18 visually lossless, 23 ffmpeg's "
                         "default, 51 worst"},

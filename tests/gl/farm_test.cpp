@@ -179,7 +179,7 @@ TEST_CASE("gl: capture --resume keeps frames matching the manifest and renders t
     REQUIRE(r.exit_code == 0);
     CHECK(r.kept == 1);                    // frame 0
     CHECK(r.images.size() == 2);           // frame 1 (damaged) and 2 (missing)
-    CHECK(r.settle_frames == 1);           // one run of frames: 1..2
+    CHECK(r.settle_frames == 1);  // one run of frames, 1..2 (cuts, but no history to settle)
     CHECK(*fileChecksum(frame1) == before);  // the same frame as the first run's
     Manifest m;
     REQUIRE(Manifest::load(dir.path / "manifest.json", m) == "");
