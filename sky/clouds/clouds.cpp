@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <numbers>
 
 namespace vista {
@@ -148,11 +147,8 @@ void Clouds::addShellPass(FrameGraph& graph, const RenderContext& rc, const SkyA
     // it is as clean as a frame without the subset march, not an upsampled 1/stride^2 of it.
     const bool history_usable = temporal && history_valid_ && !cut && history_[0].width() == cloud_desc.width &&
                                 history_[0].height() == cloud_desc.height;
+    // (That whole march is the variant without SUBSET, which does not read the block's stride.)
     frame_stride_ = history_usable ? subset_stride_ : 1;
-    if (frame_stride_ != subset_stride_) {
-        const GLint stride_1 = 1;
-        glNamedBufferSubData(uniforms_.id(), offsetof(Gpu, count) + 2 * sizeof(GLint), sizeof stride_1, &stride_1);
-    }
     const int stride = frame_stride_;
     const TextureDesc march_desc{(cloud_desc.width + stride - 1) / stride, (cloud_desc.height + stride - 1) / stride,
                                  PixelFormat::RGBA16F};

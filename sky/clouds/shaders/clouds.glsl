@@ -15,7 +15,7 @@
 // "clouds.temporal"). Variant SUBSET, the subset march (c_count.z = stride > 1, clouds_subset.glsl): the target is
 // 1/stride of the cloud target's size and each texel marches the pixel of its block that this frame
 // stands for; the blue-noise index then counts that pixel's own visits (every stride^2 frames).
-// A frame without history marches every pixel even so (c_count.z = 1, c_count.w = stride).
+// A frame without history marches every pixel even so (the variant without SUBSET, c_count.w > 1).
 #include "../../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER

@@ -16,7 +16,7 @@ struct CloudLayer {
 
 layout(std140, binding = SKY_BINDING_CLOUDS) uniform CloudUniforms {
     CloudLayer c_layers[CLOUD_MAX_LAYERS];
-    ivec4 c_count;   // x layers, y light samples, z this frame's march subset stride (clouds_subset.glsl; 1: every pixel), w [clouds] march_subset's
+    ivec4 c_count;   // x layers, y light samples, z and w the march subset stride (clouds_subset.glsl; 1: every pixel)
     vec4 c_planet;   // x ground radius, y camera radius, z fade-out distance, w HG g
     vec4 c_ambient;  // rgb sky radiance for the clouds (irradiance up / pi * [clouds] ambient)
     vec4 c_shadow;   // xy shadow map centre minus camera (world x/z, m), z extent (m), w camera altitude (m)
