@@ -29,7 +29,7 @@ struct Clouds::Gpu {
         glm::vec4 shell, noise, shape;
     } layers[kMaxCloudLayers];
     glm::ivec4 count;
-    glm::vec4 planet, ambient, shadow, sun;
+    glm::vec4 planet, ambient, shadow, sun, jitter;
 };
 
 ProgramList cloudPrograms() {
@@ -64,7 +64,7 @@ Clouds::Clouds() : uniforms_(gl::Buffer::create(sizeof(Gpu), nullptr, GL_DYNAMIC
 
 int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const SkySettings& sky,
                     const glm::dvec3& sky_irradiance_up) {
-    static_assert(sizeof(Gpu) == 3 * 16 * kMaxCloudLayers + 5 * 16, "Gpu must match the std140 block");
+    static_assert(sizeof(Gpu) == 3 * 16 * kMaxCloudLayers + 6 * 16, "Gpu must match the std140 block");
     Gpu g{};
     const double ground_r = double(sky.planet_radius_km) * 1e3;
     const double altitude = std::max(rc.view.position.y, 0.0);  // as the sky: the ground is y = 0
@@ -87,6 +87,8 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     g.count = glm::ivec4(n, clouds.light_samples, subset_stride_, subset_stride_);
     g.planet = glm::vec4(float(ground_r), float(ground_r + altitude), clouds.max_distance_km * 1e3f, clouds.phase_g);
     g.ambient = glm::vec4(glm::vec3(sky_irradiance_up / std::numbers::pi) * clouds.ambient, 0.0f);
+    // z: whether the frame is jittered (TAA; frame.cpp's own test), so the subset march takes offsets.
+    g.jitter = glm::vec4(rc.jitter_ndc, rc.jitter_ndc != glm::vec2(0.0f) ? 1.0f : 0.0f, 0.0f);
     // The shadow map's centre: where the sun's ray through the camera meets y = 0, snapped to
     // whole texels in world space (in double) so the map does not crawl as the camera moves.
     const double extent = double(clouds.shadow_extent_km) * 1e3, texel = extent / double(clouds.shadow_size);

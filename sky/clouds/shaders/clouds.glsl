@@ -79,14 +79,21 @@ void main() {
     if (any(greaterThanEqual(pixel, size))) discard;
     uv = (vec2(pixel) + 0.5) / vec2(size);
     noise_frame /= uint(stride * stride);
+    // A pixel's visits come every stride^2 frames, each at the same phase of TAA's jitter, so that
+    // jitter would never cover the pixel: it is undone, and with TAA (c_jitter.z) each visit takes
+    // its own sub-pixel offset (the R2 sequence over the visits), so the history averages the
+    // whole pixel as TAA's does.
+    vec2 own = c_jitter.z * (fract(0.5 + float(noise_frame) * vec2(0.7548776662, 0.5698402910)) - 0.5);
+    vec2 ray_uv = uv + 0.5 * c_jitter.xy + own / vec2(size);
 #else
     if (c_count.w > 1) {
         // A whole march of a subset configuration (a frame without history): the visit before
         // every pixel's first subset visit, so no two visits of a pixel share a noise frame.
         noise_frame = noise_frame / uint(c_count.w * c_count.w) - 1u;
     }
+    vec2 ray_uv = uv;
 #endif
-    vec3 dir = viewRay(uv);
+    vec3 dir = viewRay(ray_uv);
     vec3 sun = a_sun.xyz;
     float rc = c_planet.y, mu = clamp(dir.y, -1.0, 1.0);
     float t_scene = 1e30;

@@ -21,6 +21,7 @@ layout(std140, binding = SKY_BINDING_CLOUDS) uniform CloudUniforms {
     vec4 c_ambient;  // rgb sky radiance for the clouds (irradiance up / pi * [clouds] ambient)
     vec4 c_shadow;   // xy shadow map centre minus camera (world x/z, m), z extent (m), w camera altitude (m)
     vec4 c_sun;      // xyz unit vector towards the sun, w max(sun y, 0.05) (shadow map slant)
+    vec4 c_jitter;   // xy this frame's projection jitter (NDC; TAA), which the subset march undoes, z 1: jittered
 };
 
 // Nearer and farther distance to the sphere of radius s from radius r along mu; false: missed.
