@@ -48,6 +48,7 @@ GridRowSpan gridRowSpan(int z, int height, int spacing);
 // z0 and z1 (gridRowSpan), given as the grid's vertices only (vertex i at texel
 // min(i * spacing, width - 1)), per leaf cell: cells[cx] = max(cells[cx], the largest error over
 // the cell's texels of this row, both borders included). scratch: any vector (holds width floats).
+// GridErrors and the tile cache's writer (terrain/tile_cache.h) both measure through this.
 void gridRowErrors(const float* row, const float* above, const float* below, int width, int spacing, float fz,
                    int leaf_texels, std::vector<float>& scratch, float* cells);
 
@@ -65,8 +66,8 @@ public:
     GridErrors() = default;
     // levels: as many as the quadtree has (level 0, the full-resolution grid, has no error).
     GridErrors(const Heightmap& map, const TerrainMapping& mapping, int leaf_texels, int levels);
-    // Given per level, per leaf cell (row-major, cells.x * cells.y each; m): a tile cache's
-    // bounds (terrain/tile_stream.h), which are at least the exact errors above.
+    // Given per level, per leaf cell (row-major, cells.x * cells.y each; m): the exact errors
+    // above as a tile cache stores them (TileCache::gridErrors).
     GridErrors(glm::ivec2 cells, std::vector<std::vector<float>> levels_m);
 
     int levels() const { return int(levels_.size()); }

@@ -374,11 +374,14 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
             errors.push_back({file.string(), 0, why + "; and its input " + input + " cannot be read to build it"});
             return nullptr;
         }
+        const std::string reason = cache ? "it was built from another version of " + input
+                                         : std::filesystem::exists(file) ? why : "there is none yet";
         cache.reset();
         TerrainMapping mapping;
         Heightmap map = loadChecked(s, errors, &mapping);
         if (map.samples.empty()) return nullptr;
-        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s\n", file.string().c_str(), s.grid, input.c_str());
+        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s: %s\n", file.string().c_str(), s.grid, input.c_str(),
+                     reason.c_str());
         if (std::string e = buildTileCache(map, mapping, key, s.grid, file, true); !e.empty()) {
             errors.push_back({file.string(), 0, e});
             return nullptr;
@@ -398,9 +401,16 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
         return nullptr;
     }
     t->tree_ = t->stream_->quadtree();
-    t->errors_ = t->stream_->gridErrors(t->tree_.levels());
     if (t->tree_.levels() == 0) {
         errors.push_back({file.string(), 0, "the tile cache's index does not match its map size"});
+        return nullptr;
+    }
+    if (!t->stream_->cache().gridErrors(t->errors_, why)) {
+        errors.push_back({file.string(), 0, why});
+        return nullptr;
+    }
+    if (t->errors_.levels() != t->tree_.levels()) {
+        errors.push_back({file.string(), 0, "the tile cache's grid errors do not match its quadtree"});
         return nullptr;
     }
     // The tile uniforms carry the map's size (material.glsl, the bias field); no tiles of heights.

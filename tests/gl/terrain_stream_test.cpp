@@ -2,7 +2,8 @@
 // cache (built on first load) through the GPU page pool. Once the tiles settle the image matches
 // the in-memory terrain's; the first frame, drawn from the coarsest levels only, does not (so the
 // comparison can fail) but has no hole. A slow disk (a test hook) never shows a hole along a fast
-// flight; a tiny pool evicts and stays consistent (hierarchy, page table on the GPU).
+// flight; a tiny pool evicts and stays consistent (hierarchy, page table on the GPU). The grid
+// errors stored in the cache are the in-memory ones, so both select the same nodes.
 #include "renderer_fixture.h"
 #include "app/image_metrics.h"
 #include "terrain/tile_cache.h"
@@ -82,6 +83,7 @@ TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settl
     const Frame memory = render(islandScene(false), overview());
     REQUIRE(memory.holes == 0);
     const MinMaxQuadtree tree = renderer().terrain()->quadtree();
+    const GridErrors exact = renderer().terrain()->gridErrors();
 
     const Settings s = islandScene(true);
     const Frame first = render(s, overview());  // builds the cache, opens the pool: coarsest levels only
@@ -100,21 +102,32 @@ TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settl
                 REQUIRE(a.x - b.x <= 1e-3f);
                 REQUIRE(b.y - a.y <= 1e-3f);
             }
+    // The grid errors from the cache: the exact ones computed in memory, bit for bit, so the
+    // selection picks the same nodes.
+    const GridErrors& streamed = t->gridErrors();
+    REQUIRE(streamed.levels() == exact.levels());
+    REQUIRE(streamed.cells() == exact.cells());
+    for (int l = 0; l < exact.levels(); ++l)
+        for (int z = 0; z < exact.cells().y; ++z)
+            for (int x = 0; x < exact.cells().x; ++x) REQUIRE(streamed.at(l, x, z) == exact.at(l, x, z));
+    CHECK(first.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
     CHECK(first.holes == 0);
     CHECK(first.counters.at("terrain.stream.missing") > 0);
 
     t->stream()->settle();
     const Frame settled = render(s, overview());
     CHECK(settled.holes == 0);
+    CHECK(settled.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
     CHECK(settled.counters.at("terrain.stream.missing") == 0);
     CHECK(settled.counters.at("terrain.stream.missing_error_px") == 0.0);
     CHECK(t->stream()->checkConsistency() == "");
     const double db_settled = psnr(memory, settled), db_first = psnr(memory, first);
     std::printf("stream: PSNR against in-memory: first frame %.1f dB, settled %.1f dB; missing %g -> %g nodes, "
-                "%.2f px added; resident %g pages; memory %.2f MB streamed\n",
+                "%.2f px added; resident %g pages; memory %.2f MB streamed; %g nodes streamed, %g in memory\n",
                 db_first, db_settled, first.counters.at("terrain.stream.missing"),
                 settled.counters.at("terrain.stream.missing"), first.counters.at("terrain.stream.missing_error_px"),
-                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6);
+                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6,
+                settled.counters.at("terrain.nodes"), memory.counters.at("terrain.nodes"));
     CHECK(db_settled >= 40.0);
     CHECK(db_first < db_settled - 3.0);  // the comparison sees the coarser first frame
 }
