@@ -9,6 +9,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cctype>
 #include <cmath>
@@ -200,12 +201,16 @@ Heightmap finish(Heightmap map, std::string why, const std::string& name, InputE
     return map;
 }
 
+// loadHeightmap's calls (wholeHeightmapLoads).
+std::atomic<std::int64_t> whole_loads{0};
+
 bool isRaw(const std::string& name) { return lowercase(std::filesystem::path(name).extension().string()) == ".r16"; }
 
 }  // namespace
 
 Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
                         std::uint64_t max_bytes) {
+    ++whole_loads;
     Heightmap map;
     // A FIFO, /dev/zero (or a link to it) or a directory is refused before any read.
     if (std::string why = inputFileProblem(file, 2 * max_bytes + (std::uint64_t(1) << 20)); !why.empty()) {
@@ -230,18 +235,38 @@ Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::strin
     return finish(std::move(map), std::move(why), name, errors);
 }
 
+namespace {
+
+// What is wrong with the first of samples (the map's from texel index `first`) whose height is
+// out of range, and how many are; "" when all fit.
+std::string heightRangeProblem(std::span<const float> samples, std::size_t first, int width, double scale_m, double offset_m,
+                               const char* scope) {
+    std::size_t bad = 0, at = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        if (!(std::abs(offset_m + double(samples[i]) * scale_m) <= kHeightLimitM) && bad++ == 0) at = i;
+    if (bad == 0) return {};
+    char text[200];
+    std::snprintf(text, sizeof text, "height %g m (sample %g) at %s is outside the accepted -%g..%g m, %zu such sample(s)%s",
+                  offset_m + double(samples[at]) * scale_m, double(samples[at]), texelName(first + at, width).c_str(),
+                  kHeightLimitM, kHeightLimitM, bad, scope);
+    return std::string(text) + "; [terrain] height_scale_m and height_offset_m map samples to metres";
+}
+
+}  // namespace
+
 bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, const std::string& file, InputErrors& errors) {
-    std::size_t bad = 0, first = 0;
-    for (std::size_t i = 0; i < map.samples.size(); ++i)
-        if (!(std::abs(offset_m + double(map.samples[i]) * scale_m) <= kHeightLimitM) && bad++ == 0) first = i;
-    if (bad == 0) return true;
-    char text[160];
-    std::snprintf(text, sizeof text, "height %g m (sample %g) at %s is outside the accepted -%g..%g m, %zu such sample(s)",
-                  offset_m + double(map.samples[first]) * scale_m, double(map.samples[first]),
-                  texelName(first, map.width).c_str(), kHeightLimitM, kHeightLimitM, bad);
-    errors.push_back({file, 0, std::string(text) + "; [terrain] height_scale_m and height_offset_m map samples to metres"});
+    std::string problem = heightRangeProblem(map.samples, 0, map.width, scale_m, offset_m, "");
+    if (problem.empty()) return true;
+    errors.push_back({file, 0, std::move(problem)});
     return false;
 }
+
+std::string heightRowProblem(const float* row, int width, int z, double scale_m, double offset_m) {
+    return heightRangeProblem({row, std::size_t(width)}, std::size_t(z) * std::size_t(width), width, scale_m, offset_m,
+                              " in that row");
+}
+
+std::int64_t wholeHeightmapLoads() { return whole_loads.load(); }
 
 float Heightmap::sample(double x, double z) const {
     if (width <= 0 || height <= 0) return 0.0f;

@@ -42,6 +42,13 @@ Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::strin
 constexpr double kHeightLimitM = 100000.0;
 // Appends an error naming file when a height lies outside that range; true when all fit.
 bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, const std::string& file, InputErrors& errors);
+// The same for row z of a map read a row at a time (width samples): "" when all fit, else what
+// is wrong (the first such texel, how many in that row).
+std::string heightRowProblem(const float* row, int width, int z, double scale_m, double offset_m);
+
+// Tests: how many times loadHeightmap has run in this process (each holds a whole map), so a
+// test can show that a path reads a map a band of rows at a time instead.
+std::int64_t wholeHeightmapLoads();
 
 // Writes a 16-bit single-channel PNG of values clamped to [0, 1], atomically (config/file_io.h);
 // force: replace an existing file (the default for library callers such as tests that

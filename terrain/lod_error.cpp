@@ -14,36 +14,29 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Largest |full resolution - level grid| (sample units) per leaf cell, for a grid with
-// vertices every `spacing` texels. Rows of texels are interpolated on the grid's quads
-// (diagonal from (x+1, z) to (x, z+1), as terrain.cpp's index buffer splits them).
+// vertices every `spacing` texels, a row of texels at a time.
 void levelError(const Heightmap& map, int leaf, int spacing, glm::ivec2 cells, std::vector<float>& out) {
     const int w = map.width, h = map.height;
     out.assign(std::size_t(cells.x) * std::size_t(cells.y), 0.0f);
-    std::vector<float> row(static_cast<std::size_t>(w));
+    std::vector<float> scratch, above, below;
     std::vector<float> row_cells(std::size_t(cells.x));
+    auto vertices = [&](int z, std::vector<float>& v) {
+        v.resize(std::size_t((w - 2) / spacing + 2));
+        for (std::size_t i = 0; i < v.size(); ++i)
+            v[i] = map.at(int(std::min<std::int64_t>(std::int64_t(i) * spacing, w - 1)), z);
+    };
+    int grid_row = -1;
     for (int z = 0; z < h; ++z) {
-        int z0 = std::min(z / spacing, (h - 2) / spacing) * spacing, z1 = std::min(z0 + spacing, h - 1);
-        float fz = float(z - z0) / float(z1 - z0);
-        const float* r0 = &map.samples[std::size_t(z0) * std::size_t(w)];
-        const float* r1 = &map.samples[std::size_t(z1) * std::size_t(w)];
-        const float* rz = &map.samples[std::size_t(z) * std::size_t(w)];
-        for (int x0 = 0; x0 < w - 1; x0 += spacing) {
-            int x1 = std::min(x0 + spacing, w - 1);
-            float h00 = r0[x0], h10 = r0[x1], h01 = r1[x0], h11 = r1[x1];
-            float inv = 1.0f / float(x1 - x0);
-            for (int x = x0; x <= x1; ++x) {
-                float fx = float(x - x0) * inv;
-                float g = fx + fz <= 1.0f ? h00 + (h10 - h00) * fx + (h01 - h00) * fz
-                                          : h11 + (h01 - h11) * (1.0f - fx) + (h10 - h11) * (1.0f - fz);
-                row[std::size_t(x)] = std::abs(rz[x] - g);
-            }
+        const GridRowSpan span = gridRowSpan(z, h, spacing);
+        if (span.z0 != grid_row) {
+            vertices(span.z0, above);
+            vertices(span.z1, below);
+            grid_row = span.z0;
         }
+        std::fill(row_cells.begin(), row_cells.end(), 0.0f);
+        gridRowErrors(&map.samples[std::size_t(z) * std::size_t(w)], above.data(), below.data(), w, spacing, span.fz, leaf,
+                      scratch, row_cells.data());
         // A texel on a cell border belongs to both cells (they share it).
-        for (int cx = 0; cx < cells.x; ++cx) {
-            float e = 0.0f;
-            for (int x = cx * leaf; x <= std::min((cx + 1) * leaf, w - 1); ++x) e = std::max(e, row[std::size_t(x)]);
-            row_cells[std::size_t(cx)] = e;
-        }
         for (int cz = std::max(0, (z - 1) / leaf); cz <= std::min(z / leaf, cells.y - 1); ++cz) {
             if (z < cz * leaf || z > (cz + 1) * leaf) continue;
             float* dst = &out[std::size_t(cz) * std::size_t(cells.x)];
@@ -53,6 +46,39 @@ void levelError(const Heightmap& map, int leaf, int spacing, glm::ivec2 cells, s
 }
 
 }  // namespace
+
+GridRowSpan gridRowSpan(int z, int height, int spacing) {
+    GridRowSpan s;
+    s.z0 = std::min(z / spacing, (height - 2) / spacing) * spacing;
+    s.z1 = std::min(s.z0 + spacing, height - 1);
+    s.fz = float(z - s.z0) / float(s.z1 - s.z0);
+    return s;
+}
+
+// Rows of texels are interpolated on the grid's quads (diagonal from (x+1, z) to (x, z+1), as
+// terrain.cpp's index buffer splits them).
+void gridRowErrors(const float* row, const float* above, const float* below, int width, int spacing, float fz,
+                   int leaf_texels, std::vector<float>& scratch, float* cells) {
+    const int w = width;
+    scratch.resize(std::size_t(w));
+    for (int x0 = 0, i = 0; x0 < w - 1; x0 += spacing, ++i) {
+        int x1 = std::min(x0 + spacing, w - 1);
+        float h00 = above[i], h10 = above[i + 1], h01 = below[i], h11 = below[i + 1];
+        float inv = 1.0f / float(x1 - x0);
+        for (int x = x0; x <= x1; ++x) {
+            float fx = float(x - x0) * inv;
+            float g = fx + fz <= 1.0f ? h00 + (h10 - h00) * fx + (h01 - h00) * fz
+                                      : h11 + (h01 - h11) * (1.0f - fx) + (h10 - h11) * (1.0f - fz);
+            scratch[std::size_t(x)] = std::abs(row[x] - g);
+        }
+    }
+    const int count = (w - 2) / leaf_texels + 1;
+    for (int cx = 0; cx < count; ++cx) {
+        float e = cells[cx];
+        for (int x = cx * leaf_texels; x <= std::min((cx + 1) * leaf_texels, w - 1); ++x) e = std::max(e, scratch[std::size_t(x)]);
+        cells[cx] = e;
+    }
+}
 
 double screenErrorScale(double fov_y_deg, int height) {
     double t = std::tan(glm::radians(std::clamp(fov_y_deg, 1.0, 179.0)) * 0.5);
@@ -78,7 +104,7 @@ GridErrors::GridErrors(const Heightmap& map, const TerrainMapping& mapping, int 
     for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
     work(0);
     for (std::thread& t : pool) t.join();
-    const float scale = float(std::abs(mapping.height_scale_m));
+    const float scale = gridErrorScale(mapping);
     for (std::size_t level = 0; level < levels_.size(); ++level) {
         for (float& e : levels_[level]) {
             e *= scale;

@@ -22,6 +22,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -34,6 +35,26 @@ namespace vista {
 // terrain measures the rendered error, and the tests check it stays within the bound.
 double screenErrorScale(double fov_y_deg, int height);
 
+// The two rows of a level grid around texel row z of a map `height` texels high, the grid having
+// vertices every `spacing` texels and on the last row: texel rows z0 <= z <= z1 and z's fraction
+// between them. Columns are the same with the map's width.
+struct GridRowSpan {
+    int z0 = 0, z1 = 0;
+    float fz = 0.0f;
+};
+GridRowSpan gridRowSpan(int z, int height, int spacing);
+
+// The error (sample units) of one texel row of `width` samples against that grid between its rows
+// z0 and z1 (gridRowSpan), given as the grid's vertices only (vertex i at texel
+// min(i * spacing, width - 1)), per leaf cell: cells[cx] = max(cells[cx], the largest error over
+// the cell's texels of this row, both borders included). scratch: any vector (holds width floats).
+// GridErrors and the tile cache's writer (terrain/tile_cache.h) both measure through this.
+void gridRowErrors(const float* row, const float* above, const float* below, int width, int spacing, float fz,
+                   int leaf_texels, std::vector<float>& scratch, float* cells);
+
+// Sample units to metres for grid errors.
+inline float gridErrorScale(const TerrainMapping& mapping) { return float(std::abs(mapping.height_scale_m)); }
+
 // Vertical error (m) of each LOD level's grid against the full-resolution surface, per leaf
 // cell. Level L's grid has vertices every 2^L texels (clamped to the map's far edge) with
 // heights sampled there, each quad split along its (x+1, z)-(x, z+1) diagonal as the terrain
@@ -45,8 +66,8 @@ public:
     GridErrors() = default;
     // levels: as many as the quadtree has (level 0, the full-resolution grid, has no error).
     GridErrors(const Heightmap& map, const TerrainMapping& mapping, int leaf_texels, int levels);
-    // Given per level, per leaf cell (row-major, cells.x * cells.y each; m): a tile cache's
-    // bounds (terrain/tile_stream.h), which are at least the exact errors above.
+    // Given per level, per leaf cell (row-major, cells.x * cells.y each; m): the exact errors
+    // above as a tile cache stores them (TileCache::gridErrors).
     GridErrors(glm::ivec2 cells, std::vector<std::vector<float>> levels_m);
 
     int levels() const { return int(levels_.size()); }

@@ -4,6 +4,7 @@
 #include "renderer/bindings.h"
 #include "renderer/pass_kit.h"
 #include "terrain/dem.h"
+#include "terrain/heightmap_rows.h"
 #include "terrain/tile_cache.h"
 #include "terrain/materials.h"
 #include "terrain/tess_displacement.h"
@@ -172,9 +173,49 @@ bool checkGrid(int grid, InputErrors& errors) {
 
 // The user's materials and splat maps (Terrain::create reads them again for the GPU): `vista
 // check` runs the same checks.
-bool checkMaterials(const TerrainSettings& s, const Heightmap& map, InputErrors& errors) {
+bool checkMaterials(const TerrainSettings& s, int width, int height, InputErrors& errors) {
     if (!usesUserMaterials(s)) return true;
-    return loadMaterialSet(s, map.width, map.height, errors).images.layers > 0;
+    return loadMaterialSet(s, width, height, errors).images.layers > 0;
+}
+
+// A streamed terrain's missing or stale tile cache, built as `vista terrain-cache` builds it (the
+// same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time, never
+// whole, with loadChecked's checks on its size and each row; anything else (EXR, RGB, .r16, a
+// DEM) loaded whole through loadChecked, then dropped. reason: why it is built.
+bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const std::filesystem::path& file,
+                      const std::string& reason, InputErrors& errors) {
+    const std::string input = s.dem.empty() ? s.heightmap : s.dem;
+    auto announce = [&] {
+        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s: %s\n", file.string().c_str(), s.grid,
+                     input.c_str(), reason.c_str());
+    };
+    std::string why;
+    std::unique_ptr<HeightmapRows> rows = s.dem.empty() ? HeightmapRows::open(s.heightmap, why) : nullptr;
+    if (!rows) {
+        TerrainMapping mapping;
+        Heightmap map = Terrain::loadChecked(s, errors, &mapping);
+        if (map.samples.empty()) return false;
+        announce();
+        why = buildTileCache(map, mapping, key, s.grid, file, true);
+    } else {
+        if (!checkMaterials(s, rows->width(), rows->height(), errors)) return false;
+        announce();
+        const TerrainMapping mapping{s.size_m, s.height_scale_m, s.height_offset_m, rows->width(), rows->height()};
+        std::string bad;  // what is wrong with the input, naming it
+        auto read = [&](int z, float* row) {
+            bad = rows->read(z, row);
+            if (bad.empty()) bad = heightRowProblem(row, rows->width(), z, s.height_scale_m, s.height_offset_m);
+            return bad;
+        };
+        why = buildTileCache(rows->width(), rows->height(), read, mapping, key, s.grid, file, true);
+        if (!bad.empty()) {
+            const std::string prefix = s.heightmap + ": ";
+            errors.push_back({s.heightmap, 0, bad.rfind(prefix, 0) == 0 ? bad.substr(prefix.size()) : bad});
+            return false;
+        }
+    }
+    if (!why.empty()) errors.push_back({file.string(), 0, why});
+    return why.empty();
 }
 
 }  // namespace
@@ -183,13 +224,13 @@ Heightmap Terrain::loadChecked(const TerrainSettings& s, InputErrors& errors, Te
     if (!checkGrid(s.grid, errors)) return {};
     if (!s.dem.empty()) {
         Dem dem = loadDem(s.dem, s.dem_nodata, s.dem_vertical_scale, errors);
-        if (dem.map.samples.empty() || !checkMaterials(s, dem.map, errors)) return {};
+        if (dem.map.samples.empty() || !checkMaterials(s, dem.map.width, dem.map.height, errors)) return {};
         if (mapping) *mapping = demMapping(dem.info, dem.map.width, dem.map.height);
         return std::move(dem.map);
     }
     Heightmap map = loadHeightmap(s.heightmap, s.raw_width, s.raw_height, errors);
     if (map.samples.empty() || !checkHeightRange(map, s.height_scale_m, s.height_offset_m, s.heightmap, errors)) return {};
-    if (!checkMaterials(s, map, errors)) return {};
+    if (!checkMaterials(s, map.width, map.height, errors)) return {};
     if (mapping) *mapping = TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, map.width, map.height};
     return map;
 }
@@ -348,7 +389,7 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
     const std::filesystem::path file = s.stream.cache.empty() ? defaultTileCachePath(input) : std::filesystem::path(s.stream.cache);
     // A cache built from this input (when the input is there to compare) is used if it has tiles
     // of the grid's size and, for a heightmap, the settings' mapping; a missing or stale one is
-    // built now, from the map loaded once (then dropped).
+    // built now (buildStreamCache).
     TileCacheKey key;
     const bool have_input = tileCacheKey(input, key).empty();
     std::string why;
@@ -374,15 +415,10 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
             errors.push_back({file.string(), 0, why + "; and its input " + input + " cannot be read to build it"});
             return nullptr;
         }
+        const std::string reason = cache ? "it was built from another version of " + input
+                                         : std::filesystem::exists(file) ? why : "there is none yet";
         cache.reset();
-        TerrainMapping mapping;
-        Heightmap map = loadChecked(s, errors, &mapping);
-        if (map.samples.empty()) return nullptr;
-        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s\n", file.string().c_str(), s.grid, input.c_str());
-        if (std::string e = buildTileCache(map, mapping, key, s.grid, file, true); !e.empty()) {
-            errors.push_back({file.string(), 0, e});
-            return nullptr;
-        }
+        if (!buildStreamCache(s, key, file, reason, errors)) return nullptr;
         cache = TileCache::open(file, why);
         if (!cache) {
             errors.push_back({file.string(), 0, why});
@@ -398,9 +434,16 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
         return nullptr;
     }
     t->tree_ = t->stream_->quadtree();
-    t->errors_ = t->stream_->gridErrors(t->tree_.levels());
     if (t->tree_.levels() == 0) {
         errors.push_back({file.string(), 0, "the tile cache's index does not match its map size"});
+        return nullptr;
+    }
+    if (!t->stream_->cache().gridErrors(t->errors_, why)) {
+        errors.push_back({file.string(), 0, why});
+        return nullptr;
+    }
+    if (t->errors_.levels() != t->tree_.levels()) {
+        errors.push_back({file.string(), 0, "the tile cache's grid errors do not match its quadtree"});
         return nullptr;
     }
     // The tile uniforms carry the map's size (material.glsl, the bias field); no tiles of heights.

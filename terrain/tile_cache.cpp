@@ -8,11 +8,14 @@
 //   Header  magic "VTCACHE1", version, tile, key, width, height, level count, mapping
 //   Tiles   per tile: heights (float), normals (RGBA8 snorm), in the order the writer makes
 //           them (a tile row of a level as soon as its rows are in: the levels interleave)
+//   Errors  the exact grid errors (terrain/lod_error.h GridErrors; m), leaf cells of a tile:
+//           per cell row (level-0 tile row), levels 1.. in order, a float per cell (version 2)
 //   Index   one Entry per tile: offset, hash, size, min/max, error
-//   Trailer index offset, FNV-1a of header + index, end marker "VTCEND01"
+//   Trailer index offset, FNV-1a of header + index, FNV-1a of the errors, end marker "VTCEND01"
 #include "terrain/tile_cache.h"
 
 #include "config/file_io.h"
+#include "terrain/lod_error.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -23,13 +26,14 @@
 #include <cstring>
 #include <deque>
 #include <limits>
+#include <thread>
 
 namespace vista {
 namespace {
 
 constexpr char kMagic[8] = {'V', 'T', 'C', 'A', 'C', 'H', 'E', '1'};
 constexpr char kEnd[8] = {'V', 'T', 'C', 'E', 'N', 'D', '0', '1'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: the exact grid errors
 constexpr std::size_t kKeyBytes = 64 << 10;  // bytes of the input hashed into its key
 
 struct Header {
@@ -41,7 +45,7 @@ struct Header {
 };
 
 struct Trailer {
-    std::uint64_t index_offset, hash;
+    std::uint64_t index_offset, hash, errors_hash;
     char end[8];
 };
 
@@ -141,6 +145,84 @@ struct Band {
         for (; first < z && !rows.empty(); ++first) rows.pop_front();
     }
 };
+
+// One level's tile row read back from the file being written: its rows (heights only).
+struct TileRowBack {
+    int tz = -1, first = 0, width = 0;
+    std::vector<float> rows, tile_heights;
+    const float* row(int r) const { return &rows[std::size_t(r - first) * std::size_t(width)]; }
+
+    // Reads tile row tz of a level (entries: the level's index) unless it is the one held; false
+    // when a read fails.
+    bool read(int fd, const std::vector<TileCache::Entry>& entries, const TileCacheLevel& level, int tile, int row_tz) {
+        if (row_tz == tz) return true;
+        tz = row_tz;
+        first = tz * tile;
+        width = level.width;
+        const int count = std::min(tile + 1, level.height - first);
+        rows.resize(std::size_t(count) * std::size_t(width));
+        for (int tx = 0; tx < level.tiles_x; ++tx) {
+            const TileCache::Entry& e = entries[std::size_t(tz) * std::size_t(level.tiles_x) + std::size_t(tx)];
+            tile_heights.resize(std::size_t(e.width) * std::size_t(e.height));
+            const ssize_t bytes = ssize_t(tile_heights.size() * sizeof(float));
+            if (int(e.height) != count || ::pread(fd, tile_heights.data(), std::size_t(bytes), off_t(e.offset)) != bytes) {
+                tz = -1;
+                return false;
+            }
+            for (int z = 0; z < count; ++z)
+                std::memcpy(&rows[std::size_t(z) * std::size_t(width) + std::size_t(tx) * std::size_t(tile)],
+                            &tile_heights[std::size_t(z) * e.width], e.width * sizeof(float));
+        }
+        return true;
+    }
+};
+
+// The exact grid errors (terrain/lod_error.h GridErrors, leaf cells of `tile` texels) of levels
+// 1.., read back from the tiles just written (fd): per cell row, the map's rows under it (level-0
+// tiles) against each level's grid rows around them (that level's tiles: level l's sample i is
+// texel min(i * 2^l, size - 1), the grid's vertex). Levels split over the cores. emit(errors)
+// per cell row in order: levels 1.. in order, cells.x floats each (m). "" or why.
+std::string gridErrorsFromTiles(int fd, const std::vector<TileCacheLevel>& levels,
+                                const std::vector<std::vector<TileCache::Entry>>& index, int tile, float scale,
+                                const std::function<void(const std::vector<float>&)>& emit) {
+    const TileCacheLevel& base = levels[0];
+    const int nlevels = int(levels.size()), cells_x = base.tiles_x;
+    std::vector<TileRowBack> back(levels.size());
+    std::vector<float> errors(std::size_t(nlevels - 1) * std::size_t(cells_x));
+    const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    std::vector<char> failed(threads);
+    for (int cz = 0; cz < base.tiles_z; ++cz) {
+        if (!back[0].read(fd, index[0], base, tile, cz)) return "cannot read back level 0 of the tiles just written";
+        std::fill(errors.begin(), errors.end(), 0.0f);
+        auto work = [&](unsigned t) {
+            std::vector<float> scratch;
+            for (int l = 1 + int(t); l < nlevels; l += int(threads)) {
+                const int spacing = 1 << l;
+                float* cells = &errors[std::size_t(l - 1) * std::size_t(cells_x)];
+                for (int z = cz * tile; z <= std::min(cz * tile + tile, base.height - 1); ++z) {
+                    const GridRowSpan span = gridRowSpan(z, base.height, spacing);
+                    const int r = span.z0 / spacing;  // the grid rows are the level's rows r and r + 1
+                    TileRowBack& grid = back[std::size_t(l)];
+                    if (!grid.read(fd, index[std::size_t(l)], levels[std::size_t(l)], tile,
+                                   std::min(r / tile, levels[std::size_t(l)].tiles_z - 1))) {
+                        failed[t] = 1;
+                        return;
+                    }
+                    gridRowErrors(back[0].row(z), grid.row(r), grid.row(r + 1), base.width, spacing, span.fz, tile, scratch,
+                                  cells);
+                }
+                for (int cx = 0; cx < cells_x; ++cx) cells[cx] *= scale;
+            }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+        work(0);
+        for (std::thread& t : pool) t.join();
+        if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return "cannot read back the tiles just written";
+        emit(errors);
+    }
+    return {};
+}
 
 }  // namespace
 
@@ -326,12 +408,26 @@ std::string buildTileCache(int width, int height, const TileCacheRows& rows, con
                 index[l][std::size_t(tz) * std::size_t(info.tiles_x) + std::size_t(tx)].error_m += most;
             }
     }
+    // The exact grid errors, read back from the tiles (the map is not held), before the index.
+    std::uint64_t errors_hash = fnv1a(nullptr, 0);
+    if (out.ok()) {
+        const int back = ::open(out.temporary().c_str(), O_RDONLY | O_CLOEXEC);
+        if (back < 0) return file.string() + ": cannot read back " + out.temporary().string() + " (" + std::strerror(errno) + ")";
+        std::string why = gridErrorsFromTiles(back, levels, index, tile, gridErrorScale(mapping), [&](const std::vector<float>& e) {
+            const std::size_t bytes = e.size() * sizeof(float);
+            out.write(e.data(), bytes);
+            errors_hash = fnv1a(e.data(), bytes, errors_hash);
+            offset += bytes;
+        });
+        ::close(back);
+        if (!why.empty()) return file.string() + ": " + why;
+    }
     std::uint64_t hash = fnv1a(&header, sizeof header);
     for (const auto& entries : index) {
         out.write(entries.data(), entries.size() * sizeof(TileCache::Entry));
         hash = fnv1a(entries.data(), entries.size() * sizeof(TileCache::Entry), hash);
     }
-    Trailer trailer{offset, hash, {}};
+    Trailer trailer{offset, hash, errors_hash, {}};
     std::memcpy(trailer.end, kEnd, sizeof kEnd);
     out.write(&trailer, sizeof trailer);
     return out.commit();
@@ -385,6 +481,15 @@ std::unique_ptr<TileCache> TileCache::open(const std::filesystem::path& file, st
         why = name + "is truncated or damaged (its index does not fit its " + std::to_string(size) + " bytes)";
         return nullptr;
     }
+    const TileCacheLevel& base = c->levels_[0];
+    const std::uint64_t errors_bytes =
+        std::uint64_t(header.levels - 1) * std::uint64_t(base.tiles_x) * std::uint64_t(base.tiles_z) * sizeof(float);
+    if (trailer.index_offset < sizeof header + errors_bytes) {
+        why = name + "is truncated or damaged (its grid errors do not fit before its index)";
+        return nullptr;
+    }
+    c->errors_offset_ = trailer.index_offset - errors_bytes;
+    c->errors_hash_ = trailer.errors_hash;
     c->entries_.resize(count);
     if (!readAt(c->entries_.data(), index_bytes, trailer.index_offset) ||
         fnv1a(c->entries_.data(), index_bytes, fnv1a(&header, sizeof header)) != trailer.hash) {
@@ -429,6 +534,31 @@ bool TileCache::read(int level, int tx, int tz, CacheTile& out, std::string& why
         why = where + " is damaged (fails its hash); rebuild the cache with vista terrain-cache --force";
         return false;
     }
+    return true;
+}
+
+bool TileCache::gridErrors(GridErrors& out, std::string& why) const {
+    // Stored per cell row (levels 1.. each); GridErrors keeps them per level.
+    const glm::ivec2 cells(levels_[0].tiles_x, levels_[0].tiles_z);
+    const std::size_t per_level = std::size_t(cells.x) * std::size_t(cells.y);
+    std::vector<std::vector<float>> levels(levels_.size(), std::vector<float>(per_level, 0.0f));
+    std::vector<float> row(std::size_t(cells.x) * (levels_.size() - 1));
+    const std::size_t bytes = row.size() * sizeof(float);
+    std::uint64_t hash = fnv1a(nullptr, 0);
+    for (int cz = 0; cz < cells.y && bytes > 0; ++cz) {
+        if (::pread(fd_, row.data(), bytes, off_t(errors_offset_ + std::uint64_t(cz) * bytes)) != ssize_t(bytes)) {
+            why = file_.string() + ": cannot read its grid errors (" + std::strerror(errno) + ")";
+            return false;
+        }
+        hash = fnv1a(row.data(), bytes, hash);
+        for (std::size_t l = 1; l < levels.size(); ++l)
+            std::copy_n(&row[(l - 1) * std::size_t(cells.x)], cells.x, &levels[l][std::size_t(cz) * std::size_t(cells.x)]);
+    }
+    if (hash != errors_hash_) {
+        why = file_.string() + ": its grid errors are damaged (fail their hash); rebuild the cache with vista terrain-cache --force";
+        return false;
+    }
+    out = GridErrors(cells, std::move(levels));
     return true;
 }
 

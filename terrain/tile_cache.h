@@ -1,6 +1,7 @@
 // The terrain tile cache (`vista terrain-cache FILE`): a level-of-detail pyramid on disk, built
-// once per input, holding per tile its heights, normals, min/max and grid error, so a reader
-// needs only the index in memory and reads the tiles it wants.
+// once per input, holding per tile its heights, normals, min/max and grid error, and the map's
+// exact grid errors per leaf cell, so a reader needs only the index in memory and reads the tiles
+// it wants.
 //
 // Level 0 is the map; level l + 1 keeps every other sample of level l (what CDLOD's coarser
 // grids sample), down to the first level that fits one tile. A tile of level l covers samples
@@ -12,6 +13,7 @@
 
 #include "terrain/cdlod.h"
 #include "terrain/heightmap.h"
+#include "terrain/lod_error.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -85,6 +87,11 @@ public:
     const std::vector<TileCacheLevel>& levels() const { return levels_; }
     // Reads one tile from the disk and checks its hash; false with why.
     bool read(int level, int tx, int tz, CacheTile& out, std::string& why) const;
+    // The exact grid errors stored with the tiles: GridErrors of the map (terrain/lod_error.h)
+    // with leaf cells of a tile, one level per cache level (the quadtree's levels when its leaves
+    // are tiles), equal to those computed from the map in memory. Read from the disk and checked
+    // against their hash; false with why.
+    bool gridErrors(GridErrors& out, std::string& why) const;
     // Bytes held in memory: the index only.
     std::size_t memoryBytes() const;
     // The file this reader reads.
@@ -112,6 +119,7 @@ private:
     std::vector<TileCacheLevel> levels_;
     std::vector<std::size_t> first_;  // first entry of each level
     std::vector<Entry> entries_;
+    std::uint64_t errors_offset_ = 0, errors_hash_ = 0;
 };
 
 // The cache file of an input when none is named: next to it, "<input>.vtc".

@@ -143,24 +143,6 @@ MinMaxQuadtree TileStream::quadtree() const {
     return MinMaxQuadtree(cache_->mapping(), tile_, std::move(leaves));
 }
 
-GridErrors TileStream::gridErrors(int levels) const {
-    const TileCacheLevel& l0 = cache_->levels()[0];
-    const glm::ivec2 cells(l0.tiles_x, l0.tiles_z);
-    std::vector<std::vector<float>> out(std::size_t(std::max(levels, 1)));
-    out[0].assign(std::size_t(cells.x) * std::size_t(cells.y), 0.0f);
-    for (int l = 1; l < levels; ++l) {
-        const int cl = std::min(l, int(cache_->levels().size()) - 1);
-        const TileCacheLevel& info = cache_->levels()[std::size_t(cl)];
-        std::vector<float>& e = out[std::size_t(l)];
-        e.resize(out[0].size());
-        for (int z = 0; z < cells.y; ++z)
-            for (int x = 0; x < cells.x; ++x)
-                e[std::size_t(z) * std::size_t(cells.x) + std::size_t(x)] =
-                    cache_->entry(cl, std::min(x >> cl, info.tiles_x - 1), std::min(z >> cl, info.tiles_z - 1)).error_m;
-    }
-    return GridErrors(cells, std::move(out));
-}
-
 void TileStream::touch(int id) {
     for (; id >= 0; id = parentId(id)) {
         const int page = page_of_[std::size_t(id)];

@@ -1,10 +1,10 @@
 // Terrain streaming ([terrain.stream], docs/dem.md): the renderer draws from a tile cache
 // (terrain/tile_cache.h) without the map in memory. What stays resident on the CPU: the cache's
-// index, the min/max quadtree and the grid errors (built from the index: a few bytes per leaf
-// node), a handful of level-0 tiles for heightAt(). On the GPU: a fixed pool of pages (a texture
-// array of heights, one of normals; one page per cache tile) and a page table (one int per
-// cache tile of every level: its page or -1), which the TERRAIN_STREAM variant of the terrain
-// shaders reads (terrain/shaders/tiles.glsl streamSample()).
+// index, the min/max quadtree (built from the index) and the grid errors (stored in the cache):
+// a few bytes per leaf node; a handful of level-0 tiles for heightAt(). On the GPU: a fixed pool
+// of pages (a texture array of heights, one of normals; one page per cache tile) and a page table
+// (one int per cache tile of every level: its page or -1), which the TERRAIN_STREAM variant of the
+// terrain shaders reads (terrain/shaders/tiles.glsl streamSample()).
 //
 // Residency is hierarchical: a tile is uploaded only when its parent is resident, and a parent
 // is evicted only after its children (every use of a tile also stamps its ancestors, and ties
@@ -70,10 +70,6 @@ public:
     const TileCache& cache() const { return *cache_; }
     // The min/max quadtree with leaves of the cache's tile size (the [terrain] grid), from the index.
     MinMaxQuadtree quadtree() const;
-    // Per leaf cell and level, the cache's grid error of the tile holding it (m): an estimate
-    // of GridErrors' exact values (the cache measures bilinear surfaces, level by level, and
-    // adds the finer levels' errors up).
-    GridErrors gridErrors(int levels) const;
 
     // Per frame: beginFrame(), then want() the tiles the selection draws (most wanted first;
     // prefetch after), then endFrame() uploads and evicts.

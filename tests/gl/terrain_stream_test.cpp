@@ -2,15 +2,23 @@
 // cache (built on first load) through the GPU page pool. Once the tiles settle the image matches
 // the in-memory terrain's; the first frame, drawn from the coarsest levels only, does not (so the
 // comparison can fail) but has no hole. A slow disk (a test hook) never shows a hole along a fast
-// flight; a tiny pool evicts and stays consistent (hierarchy, page table on the GPU).
+// flight; a tiny pool evicts and stays consistent (hierarchy, page table on the GPU). The grid
+// errors stored in the cache are the in-memory ones, so both select the same nodes; a TIFF's
+// cache is built on first load without holding the map, the same file the command writes.
 #include "renderer_fixture.h"
 #include "app/image_metrics.h"
+#include "app/terrain_cache_cmd.h"
 #include "terrain/tile_cache.h"
 #include "terrain/tile_stream.h"
+
+#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 
 using namespace vista;
 
@@ -82,6 +90,7 @@ TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settl
     const Frame memory = render(islandScene(false), overview());
     REQUIRE(memory.holes == 0);
     const MinMaxQuadtree tree = renderer().terrain()->quadtree();
+    const GridErrors exact = renderer().terrain()->gridErrors();
 
     const Settings s = islandScene(true);
     const Frame first = render(s, overview());  // builds the cache, opens the pool: coarsest levels only
@@ -100,23 +109,103 @@ TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settl
                 REQUIRE(a.x - b.x <= 1e-3f);
                 REQUIRE(b.y - a.y <= 1e-3f);
             }
+    // The grid errors from the cache: the exact ones computed in memory, bit for bit, so the
+    // selection picks the same nodes.
+    const GridErrors& streamed = t->gridErrors();
+    REQUIRE(streamed.levels() == exact.levels());
+    REQUIRE(streamed.cells() == exact.cells());
+    for (int l = 0; l < exact.levels(); ++l)
+        for (int z = 0; z < exact.cells().y; ++z)
+            for (int x = 0; x < exact.cells().x; ++x) REQUIRE(streamed.at(l, x, z) == exact.at(l, x, z));
+    CHECK(first.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
     CHECK(first.holes == 0);
     CHECK(first.counters.at("terrain.stream.missing") > 0);
 
     t->stream()->settle();
     const Frame settled = render(s, overview());
     CHECK(settled.holes == 0);
+    CHECK(settled.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
     CHECK(settled.counters.at("terrain.stream.missing") == 0);
     CHECK(settled.counters.at("terrain.stream.missing_error_px") == 0.0);
     CHECK(t->stream()->checkConsistency() == "");
     const double db_settled = psnr(memory, settled), db_first = psnr(memory, first);
     std::printf("stream: PSNR against in-memory: first frame %.1f dB, settled %.1f dB; missing %g -> %g nodes, "
-                "%.2f px added; resident %g pages; memory %.2f MB streamed\n",
+                "%.2f px added; resident %g pages; memory %.2f MB streamed; %g nodes streamed, %g in memory\n",
                 db_first, db_settled, first.counters.at("terrain.stream.missing"),
                 settled.counters.at("terrain.stream.missing"), first.counters.at("terrain.stream.missing_error_px"),
-                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6);
+                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6,
+                settled.counters.at("terrain.nodes"), memory.counters.at("terrain.nodes"));
     CHECK(db_settled >= 40.0);
     CHECK(db_first < db_settled - 3.0);  // the comparison sees the coarser first frame
+}
+
+TEST_CASE("gl: the first streamed load of a TIFF builds its cache a band of rows at a time, as vista terrain-cache does, and rebuilds a version 1 cache") {
+    TileStream::setReadDelayForTests(0);
+    test::TempDir dir("terrain-stream-tiff");
+    const std::filesystem::path tiff = dir.path / "island.tif", cache = dir.path / "island.tif.vtc";
+    auto writeTiff = [](const std::filesystem::path& file, const Heightmap& map) {
+        auto out = OIIO::ImageOutput::create("tiff");
+        REQUIRE(out);
+        REQUIRE(out->open(file.string(), OIIO::ImageSpec(map.width, map.height, 1, OIIO::TypeDesc::FLOAT)));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, map.samples.data()));
+        REQUIRE(out->close());
+    };
+    writeTiff(tiff, generateIsland(IslandParams{257, 3}));
+    Settings s = islandScene(true, 512);
+    s.terrain.heightmap = tiff.string();
+    s.terrain.size_m = 1024.0f;
+    s.terrain.stream.cache.clear();  // next to the map
+    const std::int64_t whole = wholeHeightmapLoads();
+    REQUIRE(renderer().prepare(s).empty());
+    REQUIRE(renderer().terrain()->streamed());
+    CHECK(wholeHeightmapLoads() == whole);  // the map was never held whole
+    REQUIRE(std::filesystem::exists(cache));
+
+    // The file the command writes, byte for byte.
+    TerrainCacheOptions o;
+    o.input = tiff;
+    o.out = dir.path / "command.vtc";
+    o.tile = s.terrain.grid;
+    o.size_m = s.terrain.size_m;
+    o.height_scale_m = s.terrain.height_scale_m;
+    o.height_offset_m = s.terrain.height_offset_m;
+    o.progress = false;
+    REQUIRE(runTerrainCache(o) == 0);
+    auto bytes = [](const std::filesystem::path& f) {
+        std::ifstream in(f, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string built = bytes(cache);
+    CHECK(built == bytes(o.out));
+
+    // A cache of version 1 (its error estimates asked for finer nodes than the map needs) is
+    // refused and rebuilt on the next load.
+    std::string v1 = built;
+    const std::uint32_t version = 1;
+    std::memcpy(&v1[8], &version, sizeof version);
+    std::ofstream(cache, std::ios::binary | std::ios::trunc) << v1;
+    std::string why;
+    CHECK_FALSE(TileCache::open(cache, why));
+    CHECK(why.find("version 1") != std::string::npos);
+    s.terrain.stream.pool_pages = 511;  // another pool: the terrain loads again
+    REQUIRE(renderer().prepare(s).empty());
+    REQUIRE(renderer().terrain()->streamed());
+    CHECK(wholeHeightmapLoads() == whole);
+    CHECK(bytes(cache) == built);
+
+    // loadChecked's height range holds row by row: a height beyond 100 km names the map and its
+    // texel, and leaves no cache behind.
+    Heightmap spike = generateIsland(IslandParams{65, 3});
+    spike.samples[40 * 65 + 9] = 1e6f;
+    const std::filesystem::path bad = dir.path / "spike.tif";
+    writeTiff(bad, spike);
+    s.terrain.heightmap = bad.string();
+    const InputErrors errors = renderer().prepare(s);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == bad.string());
+    CHECK(errors[0].message.find("at texel (9, 40) is outside the accepted") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir.path / "spike.tif.vtc"));
+    CHECK(wholeHeightmapLoads() == whole);
 }
 
 TEST_CASE("gl: a streamed terrain on a slow disk never shows a hole along a fast flight") {

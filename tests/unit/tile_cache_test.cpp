@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -120,6 +121,39 @@ TEST_CASE("tile cache: a round trip equals the pyramid in memory, reading one ti
     }
 }
 
+TEST_CASE("tile cache: the stored grid errors equal those computed from the map in memory, bit for bit") {
+    TempDir dir("errors");
+    // 2^n + 1, one more (a last interval of one sample at every level), a tile that is no power of 2.
+    for (auto [size, tile] : {std::pair{129, 32}, {130, 32}, {150, 32}, {150, 12}, {33, 32}}) {
+        CAPTURE(size);
+        CAPTURE(tile);
+        const Heightmap map = island(size);
+        const fs::path file = dir / "map.vtc";
+        REQUIRE(build(map, file, tile, true) == "");
+        std::string why;
+        auto cache = TileCache::open(file, why);
+        REQUIRE_MESSAGE(cache, why);
+        GridErrors stored;
+        REQUIRE_MESSAGE(cache->gridErrors(stored, why), why);
+        // The quadtree with leaves of a tile has one level per cache level.
+        const MinMaxQuadtree tree(map, mappingOf(map), tile);
+        REQUIRE(stored.levels() == tree.levels());
+        REQUIRE(stored.levels() == int(cache->levels().size()));
+        const GridErrors memory(map, mappingOf(map), tile, tree.levels());
+        REQUIRE(stored.cells() == memory.cells());
+        bool some = false;
+        for (int l = 0; l < memory.levels(); ++l) {
+            CHECK(stored.maxAt(l) == memory.maxAt(l));
+            for (int z = 0; z < memory.cells().y; ++z)
+                for (int x = 0; x < memory.cells().x; ++x) {
+                    REQUIRE(stored.at(l, x, z) == memory.at(l, x, z));
+                    some = some || memory.at(l, x, z) > 0.0f;
+                }
+        }
+        CHECK(some == (memory.levels() > 1));  // one tile: level 0 only, no error
+    }
+}
+
 TEST_CASE("tile cache: built from an image read a band of rows at a time, the same file as from the map in memory") {
     TempDir dir("rows");
     const Heightmap map = island(150);
@@ -188,6 +222,25 @@ TEST_CASE("tile cache: a truncated, damaged or foreign cache is found, and an ex
     header[60] ^= 0x40;  // inside the header's mapping
     CHECK_FALSE(TileCache::open(write("header.vtc", header), why));
     CHECK(why.find("fail their hash") != std::string::npos);
+    // A cache of version 1 (per-tile error estimates only) is refused, naming both versions.
+    std::string v1 = bytes;
+    std::uint32_t version = 1;
+    std::memcpy(&v1[8], &version, sizeof version);
+    CHECK_FALSE(TileCache::open(write("v1.vtc", v1), why));
+    CHECK(why.find("of version 1; this vista reads version 2") != std::string::npos);
+    // Damaged grid errors (just before the index, which follows the tiles) open, but are refused when read.
+    auto good = TileCache::open(file, why);
+    REQUIRE(good);
+    const TileCache::Entry& last = good->entry(int(good->levels().size()) - 1, 0, 0);
+    const std::size_t errors_at = std::size_t(last.offset) + std::size_t(last.width) * last.height * 8;  // heights, normals
+    std::string errors = bytes;
+    errors[errors_at + 2] ^= 0x10;
+    auto damaged = TileCache::open(write("errors.vtc", errors), why);
+    REQUIRE(damaged);
+    GridErrors e;
+    CHECK(good->gridErrors(e, why));
+    CHECK_FALSE(damaged->gridErrors(e, why));
+    CHECK(why.find("grid errors are damaged") != std::string::npos);
     // A damaged tile opens (the index is fine) but that tile is refused when read.
     std::string tile = bytes;
     tile[200] ^= 0x01;
