@@ -68,7 +68,7 @@ int runTerrainCache(const TerrainCacheOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     int total = 0;
     for (const auto& l : tileCacheLevels(map.width, map.height, o.tile)) total += l.tiles_x * l.tiles_z;
-    Progress progress(total, "terrain-cache");
+    Progress progress(total, "terrain-cache", stderr, "tiles");
     auto report = [&](int done, int) {
         if (o.progress) progress.update(done);
     };
