@@ -1,5 +1,6 @@
-// `vista terrain-cache`: load the input as a DEM (GDAL) or, when it has no georeferencing, read
-// it as a heightmap image (a band of rows at a time when it has one channel); check any cache already there against the input's key; build when needed.
+// `vista terrain-cache`: read the input as a DEM (GDAL, a row at a time unless it has nodata to
+// fill) or, when it has no georeferencing, as a heightmap image (a band of rows at a time when it
+// has one channel); check any cache already there against the input's key; build when needed.
 #include "app/terrain_cache_cmd.h"
 
 #include "app/progress.h"
@@ -38,30 +39,41 @@ int runTerrainCache(const TerrainCacheOptions& o) {
         std::fprintf(stderr, "vista: %s: rebuilding\n", why.c_str());
     }
 
-    // A DEM when GDAL finds georeferencing; a plain image goes through OpenImageIO instead: a
-    // one-channel image (a gen-heightmap TIFF, a 16-bit PNG) a band of rows at a time, never
-    // whole, anything else (EXR, RGB) loaded whole.
+    // A DEM when GDAL finds georeferencing, read a row at a time (loaded whole when it has nodata
+    // cells to fill); a plain image goes through OpenImageIO instead: a one-channel image (a
+    // gen-heightmap TIFF, a 16-bit PNG) a band of rows at a time, anything else (EXR, RGB) whole.
     InputErrors errors;
-    Dem dem = loadDem(o.input, DemNodata::Fill, 1.0, errors);
-    Heightmap map;
+    bool fill_whole = false;
+    std::unique_ptr<DemRows> dem_rows = DemRows::open(o.input, DemNodata::Fill, 1.0, errors, fill_whole);
+    std::unique_ptr<HeightmapRows> image_rows;
+    TileCacheRows read;  // set when the input is read a row at a time
+    Heightmap map;       // the input held whole otherwise (or only its size)
     TerrainMapping mapping;
-    std::unique_ptr<HeightmapRows> rows;
-    if (!dem.map.samples.empty()) {
-        mapping = demMapping(dem.info, dem.map.width, dem.map.height);
-        map = std::move(dem.map);
+    if (dem_rows) {
+        map.width = dem_rows->width();
+        map.height = dem_rows->height();
+        mapping = demMapping(dem_rows->info(), map.width, map.height);
+        read = [&](int z, float* row) { return dem_rows->read(z, row); };
+    } else if (fill_whole) {
+        Dem dem = loadDem(o.input, DemNodata::Fill, 1.0, errors);
+        if (!dem.map.samples.empty()) {
+            mapping = demMapping(dem.info, dem.map.width, dem.map.height);
+            map = std::move(dem.map);
+        }
     } else if (errors.size() == 1 && errors[0].message.find("no geotransform") != std::string::npos) {
         errors.clear();
         std::string not_rows;
-        rows = HeightmapRows::open(o.input, not_rows);
-        if (rows) {
-            map.width = rows->width();
-            map.height = rows->height();
+        image_rows = HeightmapRows::open(o.input, not_rows);
+        if (image_rows) {
+            map.width = image_rows->width();
+            map.height = image_rows->height();
+            read = [&](int z, float* row) { return image_rows->read(z, row); };
         } else {
             map = loadHeightmap(o.input, 0, 0, errors);
         }
         mapping = TerrainMapping{o.size_m, o.height_scale_m, o.height_offset_m, map.width, map.height};
     }
-    if (!rows && map.samples.empty()) {
+    if (!read && map.samples.empty()) {
         for (const auto& e : errors) std::fprintf(stderr, "vista: %s\n", e.str().c_str());
         return 2;
     }
@@ -72,14 +84,10 @@ int runTerrainCache(const TerrainCacheOptions& o) {
     auto report = [&](int done, int) {
         if (o.progress) progress.update(done);
     };
-    if (rows) {
-        auto read = [&](int z, float* row) { return rows->read(z, row); };
-        why = buildTileCache(map.width, map.height, read, mapping, key, o.tile, out, true, report);
-    } else {
-        why = buildTileCache(map, mapping, key, o.tile, out, true, report);
-    }
+    why = read ? buildTileCache(map.width, map.height, read, mapping, key, o.tile, out, true, report)
+               : buildTileCache(map, mapping, key, o.tile, out, true, report);
     if (o.progress) progress.finish();
-    if (!why.empty()) return fail(why, rows && why.rfind(o.input.string(), 0) == 0 ? 2 : 1);
+    if (!why.empty()) return fail(why, read && why.rfind(o.input.string(), 0) == 0 ? 2 : 1);
     std::printf("wrote %s: %dx%d samples, %d tiles of %d, %.1f MB, in %.2f s\n", out.string().c_str(), map.width, map.height,
                 total, o.tile, double(std::filesystem::file_size(out)) / 1e6,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

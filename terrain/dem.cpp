@@ -27,6 +27,9 @@ namespace {
 constexpr double kMaxGeographicSpanDeg = 10.0;
 constexpr double kMaxGeographicLatDeg = 85.0;
 
+// loadDem's calls (wholeDemLoads).
+std::atomic<std::int64_t> whole_loads{0};
+
 void initGdal() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -126,6 +129,38 @@ std::string texelMetres(GDALDatasetH ds, const double gt[6], int height, DemInfo
            "geographic latitude/longitude";
 }
 
+// A band's samples as metres (its scale and offset, the vertical unit, the exaggeration); its
+// nodata value and non-finite samples are holes.
+struct SampleUnits {
+    double k = 1.0, b = 0.0;
+    float nodata = std::numeric_limits<float>::quiet_NaN();
+    bool known(float v) const { return std::isfinite(v) && v != nodata; }
+    float metres(float v) const { return float(b + k * double(v)); }
+};
+
+SampleUnits sampleUnits(GDALRasterBandH band, const DemInfo& info, double vertical_scale) {
+    int has_nodata = 0, has_scale = 0, has_offset = 0;
+    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+    const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
+    SampleUnits u;
+    if (has_nodata && std::isfinite(nodata) && std::abs(nodata) <= double(std::numeric_limits<float>::max()))
+        u.nodata = float(nodata);
+    u.k = (has_scale ? scale : 1.0) * info.metres_per_unit * vertical_scale;
+    u.b = (has_offset ? offset : 0.0) * info.metres_per_unit * vertical_scale;
+    return u;
+}
+
+// Where a sample of the file goes in the terrain's map: its rows run north to south, its
+// columns west to east.
+struct Orientation {
+    int width = 0, height = 0;
+    bool flip_x = false, flip_z = false;
+    Orientation() = default;
+    Orientation(int w, int h, const double gt[6]) : width(w), height(h), flip_x(gt[1] < 0.0), flip_z(gt[5] > 0.0) {}
+    int fileRow(int z) const { return flip_z ? height - 1 - z : z; }
+    int column(int x) const { return flip_x ? width - 1 - x : x; }
+};
+
 // Reads the band as metres into map (row 0 north, column 0 west) and marks the nodata cells.
 std::string readHeights(GDALDatasetH ds, GDALRasterBandH band, const double gt[6], double vertical_scale, Heightmap& map,
                         std::vector<std::uint8_t>& known, DemInfo& info) {
@@ -133,29 +168,18 @@ std::string readHeights(GDALDatasetH ds, GDALRasterBandH band, const double gt[6
     std::vector<float> raw(std::size_t(width) * std::size_t(height));
     if (GDALRasterIO(band, GF_Read, 0, 0, width, height, raw.data(), width, height, GDT_Float32, 0, 0) != CE_None)
         return "cannot read its samples (" + QuietErrors::last("the file is truncated or damaged") + ")";
-    int has_nodata = 0, has_scale = 0, has_offset = 0;
-    const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
-    const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
-    const float nodata_f = has_nodata && std::isfinite(nodata) && std::abs(nodata) <= double(std::numeric_limits<float>::max())
-                               ? float(nodata)
-                               : std::numeric_limits<float>::quiet_NaN();
-    const double k = (has_scale ? scale : 1.0) * info.metres_per_unit * vertical_scale;
-    const double b = (has_offset ? offset : 0.0) * info.metres_per_unit * vertical_scale;
+    const SampleUnits units = sampleUnits(band, info, vertical_scale);
+    const Orientation o(width, height, gt);
     map.width = width;
     map.height = height;
     map.samples.assign(raw.size(), 0.0f);
     known.assign(raw.size(), 0);
-    const bool flip_x = gt[1] < 0.0, flip_z = gt[5] > 0.0;  // the terrain's rows run north to south
     for (int z = 0; z < height; ++z)
         for (int x = 0; x < width; ++x) {
-            const std::size_t from = std::size_t(z) * std::size_t(width) + std::size_t(x);
-            const std::size_t to = std::size_t(flip_z ? height - 1 - z : z) * std::size_t(width) +
-                                   std::size_t(flip_x ? width - 1 - x : x);
-            const float v = raw[from];
-            // A non-finite sample is nodata too: float DEMs often mark holes with NaN.
-            if (!std::isfinite(v) || v == nodata_f) continue;
-            const double m = b + k * double(v);
-            map.samples[to] = float(m);
+            const float v = raw[std::size_t(o.fileRow(z)) * std::size_t(width) + std::size_t(x)];
+            if (!units.known(v)) continue;
+            const std::size_t to = std::size_t(z) * std::size_t(width) + std::size_t(o.column(x));
+            map.samples[to] = units.metres(v);
             known[to] = 1;
         }
     return {};
@@ -165,9 +189,8 @@ std::string texelName(std::size_t index, int width) {
     return "texel (" + std::to_string(index % std::size_t(width)) + ", " + std::to_string(index / std::size_t(width)) + ")";
 }
 
-// Everything after the file is open: the checks in the order a user would fix them.
-std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scale, std::uint64_t max_bytes, Dem& dem) {
-    DemInfo& info = dem.info;
+// The checks before any sample is read, in the order a user would fix them; fills info and gt.
+std::string checkDem(GDALDatasetH ds, std::uint64_t max_bytes, DemInfo& info, double gt[6]) {
     GDALDriverH driver = GDALGetDatasetDriver(ds);
     info.driver = driver ? GDALGetDriverShortName(driver) : "unknown";
     const int bands = GDALGetRasterCount(ds);
@@ -178,7 +201,6 @@ std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scal
         return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples; a DEM needs at least 2x2";
     // Georeferencing before the size: a plain image larger than a DEM may be (a gen-heightmap
     // TIFF) is told to be a heightmap, which vista terrain-cache reads a band of rows at a time.
-    double gt[6];
     if (GDALGetGeoTransform(ds, gt) != CE_None)
         return "has no geotransform (no georeferencing, " + info.driver +
                "); a DEM needs one to give its texel spacing; use [terrain] heightmap with size_m for a plain image";
@@ -186,8 +208,8 @@ std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scal
     if (bytes > max_bytes)
         return "is " + std::to_string(width) + "x" + std::to_string(height) + " samples, " + std::to_string(bytes) +
                " bytes as floats, over the limit of " + std::to_string(max_bytes) + " bytes";
-    for (double v : gt)
-        if (!std::isfinite(v)) return "has a geotransform with a non-finite term; accepted: finite numbers";
+    for (int i = 0; i < 6; ++i)
+        if (!std::isfinite(gt[i])) return "has a geotransform with a non-finite term; accepted: finite numbers";
     if (gt[2] != 0.0 || gt[4] != 0.0)
         return "has a rotated or sheared geotransform (row/column terms " + number(gt[2]) + ", " + number(gt[4]) +
                "); accepted: north-up rasters (those terms 0); warp it first (gdalwarp)";
@@ -203,27 +225,52 @@ std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scal
     info.metres_per_unit = verticalUnit(unit);
     if (info.metres_per_unit == 0.0)
         return "has heights in '" + unit + "'; accepted vertical units: metres (or none), feet, US survey feet, km, cm";
+    return {};
+}
+
+// The nodata count's verdict: "" when the map can be used (filled, when there are holes).
+std::string nodataProblem(const DemInfo& info, std::size_t samples, std::size_t first, int width, DemNodata mode) {
+    if (info.nodata == samples) return "has no data at all (every sample is nodata or not finite)";
+    if (info.nodata > 0 && mode == DemNodata::Refuse)
+        return "has " + std::to_string(info.nodata) + " nodata sample(s), the first at " + texelName(first, width) +
+               "; [terrain] dem_nodata = refuse; accepted: fill (from their neighbours) or refuse";
+    return {};
+}
+
+std::string heightRangeProblem(const DemInfo& info) {
+    if (!(std::abs(info.min_m) <= kHeightLimitM) || !(std::abs(info.max_m) <= kHeightLimitM))
+        return "has heights " + number(info.min_m) + ".." + number(info.max_m) + " m (after units and dem_vertical_scale); "
+               "accepted: within +-" + number(kHeightLimitM) + " m";
+    return {};
+}
+
+// A height in metres normalised to [0, 1] over the range, in double: the material bands are
+// fractions of it.
+float normalised(float metres, const DemInfo& info) {
+    const double range = info.max_m - info.min_m;
+    return range > 0.0 ? float((double(metres) - info.min_m) / range) : 0.0f;
+}
+
+// Everything after the file is open.
+std::string readDem(GDALDatasetH ds, DemNodata nodata_mode, double vertical_scale, std::uint64_t max_bytes, Dem& dem) {
+    DemInfo& info = dem.info;
+    double gt[6];
+    if (std::string why = checkDem(ds, max_bytes, info, gt); !why.empty()) return why;
+    GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     std::vector<std::uint8_t> known;
     if (std::string why = readHeights(ds, band, gt, vertical_scale, dem.map, known, info); !why.empty()) return why;
 
     std::size_t first = 0;
     for (std::size_t i = 0; i < known.size(); ++i)
         if (!known[i] && info.nodata++ == 0) first = i;
-    if (info.nodata == known.size()) return "has no data at all (every sample is nodata or not finite)";
-    if (info.nodata > 0 && nodata_mode == DemNodata::Refuse)
-        return "has " + std::to_string(info.nodata) + " nodata sample(s), the first at " + texelName(first, width) +
-               "; [terrain] dem_nodata = refuse; accepted: fill (from their neighbours) or refuse";
-    if (info.nodata > 0) fillFromNeighbours(dem.map.samples, known, width, height);
+    if (std::string why = nodataProblem(info, known.size(), first, dem.map.width, nodata_mode); !why.empty()) return why;
+    if (info.nodata > 0) fillFromNeighbours(dem.map.samples, known, dem.map.width, dem.map.height);
 
     auto [lo, hi] = std::minmax_element(dem.map.samples.begin(), dem.map.samples.end());
     info.min_m = *lo;
     info.max_m = *hi;
-    if (!(std::abs(info.min_m) <= kHeightLimitM) || !(std::abs(info.max_m) <= kHeightLimitM))
-        return "has heights " + number(info.min_m) + ".." + number(info.max_m) + " m (after units and dem_vertical_scale); "
-               "accepted: within +-" + number(kHeightLimitM) + " m";
-    // Normalised to [0, 1] over the range, in double: the material bands are fractions of it.
-    const double range = info.max_m - info.min_m;
-    for (float& v : dem.map.samples) v = range > 0.0 ? float((double(v) - info.min_m) / range) : 0.0f;
+    if (std::string why = heightRangeProblem(info); !why.empty()) return why;
+    for (float& v : dem.map.samples) v = normalised(v, info);
     return {};
 }
 
@@ -334,8 +381,11 @@ Dem loadDem(const std::filesystem::path& file, DemNodata nodata, double vertical
         errors.push_back({file.string(), 0, why});
         return {};
     }
+    ++whole_loads;
     return openAndRead(file.string(), file.string(), nodata, vertical_scale, errors, max_bytes, {});
 }
+
+std::int64_t wholeDemLoads() { return whole_loads.load(); }
 
 Dem decodeDem(std::span<const unsigned char> bytes, const std::string& name, DemNodata nodata, double vertical_scale,
               InputErrors& errors, std::uint64_t max_bytes, const std::vector<std::string>& drivers) {
@@ -358,6 +408,104 @@ Dem decodeDem(std::span<const unsigned char> bytes, const std::string& name, Dem
     Dem dem = openAndRead(path, name, nodata, vertical_scale, errors, max_bytes, drivers);
     VSIUnlink(path.c_str());
     return dem;
+}
+
+struct DemRows::Impl {
+    std::string name;
+    Dataset ds{nullptr};
+    GDALRasterBandH band = nullptr;
+    DemInfo info;
+    SampleUnits units;
+    Orientation orientation;
+    std::vector<float> raw;  // one row of the file
+
+    // Row fz of the file as stored; "" or why.
+    std::string readFileRow(int fz) {
+        QuietErrors quiet;
+        if (GDALRasterIO(band, GF_Read, 0, fz, orientation.width, 1, raw.data(), orientation.width, 1, GDT_Float32, 0, 0) !=
+            CE_None)
+            return name + ": cannot read row " + std::to_string(fz) + " (" +
+                   QuietErrors::last("the file is truncated or damaged") + ")";
+        return {};
+    }
+};
+
+DemRows::DemRows() : impl_(std::make_unique<Impl>()) {}
+DemRows::~DemRows() = default;
+int DemRows::width() const { return impl_->orientation.width; }
+int DemRows::height() const { return impl_->orientation.height; }
+const DemInfo& DemRows::info() const { return impl_->info; }
+
+std::unique_ptr<DemRows> DemRows::open(const std::filesystem::path& file, DemNodata nodata, double vertical_scale,
+                                       InputErrors& errors, bool& fill_whole) {
+    fill_whole = false;
+    if (std::string why = inputFileProblem(file, std::numeric_limits<std::uintmax_t>::max()); !why.empty()) {
+        errors.push_back({file.string(), 0, why});
+        return nullptr;
+    }
+    initGdal();
+    std::unique_ptr<DemRows> rows(new DemRows());
+    Impl& d = *rows->impl_;
+    d.name = file.string();
+    auto fail = [&](const std::string& why) {
+        errors.push_back({d.name, 0, why});
+        return nullptr;
+    };
+    double gt[6];
+    {
+        QuietErrors quiet;
+        d.ds.h = GDALOpenEx(d.name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr);
+        if (!d.ds.h) return fail("cannot be read as a DEM by GDAL (" + QuietErrors::last("not a raster format GDAL knows") + ")");
+        if (std::string why = checkDem(d.ds.h, std::numeric_limits<std::uint64_t>::max(), d.info, gt); !why.empty())
+            return fail(why);
+    }
+    d.band = GDALGetRasterBand(d.ds.h, 1);
+    d.units = sampleUnits(d.band, d.info, vertical_scale);
+    d.orientation = Orientation(GDALGetRasterXSize(d.ds.h), GDALGetRasterYSize(d.ds.h), gt);
+    const Orientation& o = d.orientation;
+    d.raw.resize(std::size_t(o.width));
+    // The first pass: the height range and the nodata cells (the first in the map's order).
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    std::size_t first = std::numeric_limits<std::size_t>::max();
+    for (int fz = 0; fz < o.height; ++fz) {
+        if (std::string why = d.readFileRow(fz); !why.empty()) return fail(why.substr(d.name.size() + 2));
+        const std::size_t row_start = std::size_t(o.flip_z ? o.height - 1 - fz : fz) * std::size_t(o.width);
+        for (int x = 0; x < o.width; ++x) {
+            const float v = d.raw[std::size_t(x)];
+            if (!d.units.known(v)) {
+                ++d.info.nodata;
+                first = std::min(first, row_start + std::size_t(o.column(x)));
+                continue;
+            }
+            const float m = d.units.metres(v);
+            lo = std::min(lo, m);
+            hi = std::max(hi, m);
+        }
+    }
+    const std::size_t samples = std::size_t(o.width) * std::size_t(o.height);
+    if (std::string why = nodataProblem(d.info, samples, first, o.width, nodata); !why.empty()) return fail(why);
+    if (d.info.nodata > 0) {
+        fill_whole = true;
+        return nullptr;
+    }
+    d.info.min_m = lo;
+    d.info.max_m = hi;
+    if (std::string why = heightRangeProblem(d.info); !why.empty()) return fail(why);
+    return rows;
+}
+
+std::string DemRows::read(int z, float* row) {
+    Impl& d = *impl_;
+    const Orientation& o = d.orientation;
+    if (std::string why = d.readFileRow(o.fileRow(z)); !why.empty()) return why;
+    for (int x = 0; x < o.width; ++x) {
+        const float v = d.raw[std::size_t(x)];
+        if (!d.units.known(v))
+            return d.name + ": " + texelName(std::size_t(z) * std::size_t(o.width) + std::size_t(o.column(x)), o.width) +
+                   " has no data on the second reading (the file changed while it was read)";
+        row[o.column(x)] = normalised(d.units.metres(v), d.info);
+    }
+    return {};
 }
 
 }  // namespace vista

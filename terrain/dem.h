@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,10 +41,40 @@ struct Dem {
 // samples' memory (as floats), checked before any is read.
 Dem loadDem(const std::filesystem::path& file, DemNodata nodata, double vertical_scale, InputErrors& errors,
             std::uint64_t max_bytes = std::uint64_t(4) << 30);
+// Tests: how many times loadDem has read a DEM in this process (each holds it whole), so a test
+// can show that a path reads it a row at a time instead (DemRows).
+std::int64_t wholeDemLoads();
 // The same for a file's bytes held in memory (the fuzz target): name's extension is kept so
 // drivers that go by it see it; only the drivers listed may open it (empty: any).
 Dem decodeDem(std::span<const unsigned char> bytes, const std::string& name, DemNodata nodata, double vertical_scale,
               InputErrors& errors, std::uint64_t max_bytes, const std::vector<std::string>& drivers);
+
+// A DEM read a row at a time, so that the tile cache of a DEM larger than memory is built
+// without holding it (vista terrain-cache, a streamed terrain's first load): open() makes
+// loadDem's checks and a first pass over the rows for the height range and the nodata count;
+// read() gives the rows as loadDem's samples, bit for bit. A DEM whose nodata cells are to be
+// filled is not read this way (the fill spreads across the map): open() returns null without
+// an error and sets fill_whole, and the caller loads it whole.
+class DemRows {
+public:
+    static std::unique_ptr<DemRows> open(const std::filesystem::path& file, DemNodata nodata, double vertical_scale,
+                                         InputErrors& errors, bool& fill_whole);
+    ~DemRows();
+    DemRows(const DemRows&) = delete;
+    DemRows& operator=(const DemRows&) = delete;
+
+    int width() const;
+    int height() const;
+    const DemInfo& info() const;
+    // Row z (0 north) into row (width samples, normalised as loadDem's). "" on success, else why,
+    // naming the file.
+    std::string read(int z, float* row);
+
+private:
+    DemRows();
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 // Fills the cells where known is 0 from their neighbours, ring by ring inwards ("onion
 // peeling"): each cell of a ring takes the mean of its already known 4-neighbours. Every cell

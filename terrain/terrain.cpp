@@ -179,9 +179,10 @@ bool checkMaterials(const TerrainSettings& s, int width, int height, InputErrors
 }
 
 // A streamed terrain's missing or stale tile cache, built as `vista terrain-cache` builds it (the
-// same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time, never
-// whole, with loadChecked's checks on its size and each row; anything else (EXR, RGB, .r16, a
-// DEM) loaded whole through loadChecked, then dropped. reason: why it is built.
+// same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time and a
+// DEM a row at a time, never whole, with loadChecked's checks on the size and each row;
+// anything else (EXR, RGB, .r16, a DEM with nodata to fill) loaded whole through loadChecked,
+// then dropped. reason: why it is built.
 bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const std::filesystem::path& file,
                       const std::string& reason, InputErrors& errors) {
     const std::string input = s.dem.empty() ? s.heightmap : s.dem;
@@ -190,29 +191,42 @@ bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const s
                      input.c_str(), reason.c_str());
     };
     std::string why;
-    std::unique_ptr<HeightmapRows> rows = s.dem.empty() ? HeightmapRows::open(s.heightmap, why) : nullptr;
-    if (!rows) {
+    std::unique_ptr<HeightmapRows> image_rows;
+    std::unique_ptr<DemRows> dem_rows;
+    bool fill_whole = false;
+    if (s.dem.empty()) {
+        image_rows = HeightmapRows::open(s.heightmap, why);
+    } else {
+        dem_rows = DemRows::open(s.dem, s.dem_nodata, s.dem_vertical_scale, errors, fill_whole);
+        if (!dem_rows && !fill_whole) return false;
+    }
+    if (!image_rows && !dem_rows) {
         TerrainMapping mapping;
         Heightmap map = Terrain::loadChecked(s, errors, &mapping);
         if (map.samples.empty()) return false;
         announce();
         why = buildTileCache(map, mapping, key, s.grid, file, true);
-    } else {
-        if (!checkMaterials(s, rows->width(), rows->height(), errors)) return false;
-        announce();
-        const TerrainMapping mapping{s.size_m, s.height_scale_m, s.height_offset_m, rows->width(), rows->height()};
-        std::string bad;  // what is wrong with the input, naming it
-        auto read = [&](int z, float* row) {
-            bad = rows->read(z, row);
-            if (bad.empty()) bad = heightRowProblem(row, rows->width(), z, s.height_scale_m, s.height_offset_m);
-            return bad;
-        };
-        why = buildTileCache(rows->width(), rows->height(), read, mapping, key, s.grid, file, true);
-        if (!bad.empty()) {
-            const std::string prefix = s.heightmap + ": ";
-            errors.push_back({s.heightmap, 0, bad.rfind(prefix, 0) == 0 ? bad.substr(prefix.size()) : bad});
-            return false;
-        }
+        if (!why.empty()) errors.push_back({file.string(), 0, why});
+        return why.empty();
+    }
+    const int width = image_rows ? image_rows->width() : dem_rows->width();
+    const int height = image_rows ? image_rows->height() : dem_rows->height();
+    if (!checkMaterials(s, width, height, errors)) return false;
+    announce();
+    const TerrainMapping mapping = image_rows ? TerrainMapping{s.size_m, s.height_scale_m, s.height_offset_m, width, height}
+                                              : demMapping(dem_rows->info(), width, height);
+    std::string bad;  // what is wrong with the input, naming it
+    auto read = [&](int z, float* row) {
+        if (dem_rows) return bad = dem_rows->read(z, row);
+        bad = image_rows->read(z, row);
+        if (bad.empty()) bad = heightRowProblem(row, width, z, s.height_scale_m, s.height_offset_m);
+        return bad;
+    };
+    why = buildTileCache(width, height, read, mapping, key, s.grid, file, true);
+    if (!bad.empty()) {
+        const std::string prefix = input + ": ";
+        errors.push_back({input, 0, bad.rfind(prefix, 0) == 0 ? bad.substr(prefix.size()) : bad});
+        return false;
     }
     if (!why.empty()) errors.push_back({file.string(), 0, why});
     return why.empty();

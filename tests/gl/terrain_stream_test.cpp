@@ -8,6 +8,7 @@
 #include "renderer_fixture.h"
 #include "app/image_metrics.h"
 #include "app/terrain_cache_cmd.h"
+#include "terrain/dem.h"
 #include "terrain/tile_cache.h"
 #include "terrain/tile_stream.h"
 
@@ -206,6 +207,53 @@ TEST_CASE("gl: the first streamed load of a TIFF builds its cache a band of rows
     CHECK(errors[0].message.find("at texel (9, 40) is outside the accepted") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir.path / "spike.tif.vtc"));
     CHECK(wholeHeightmapLoads() == whole);
+}
+
+TEST_CASE("gl: the first streamed load of a DEM builds its cache a row at a time, as vista terrain-cache does") {
+    TileStream::setReadDelayForTests(0);
+    test::TempDir dir("terrain-stream-dem");
+    // An ESRI ASCII grid: georeferenced (8 m cells), read by GDAL.
+    const Heightmap island = generateIsland(IslandParams{129, 3});
+    auto writeGrid = [&](const std::filesystem::path& file, int hole) {
+        std::ofstream out(file);
+        out << "ncols 129\nnrows 129\nxllcorner 0\nyllcorner 0\ncellsize 8\nNODATA_value -9999\n";
+        for (int i = 0; i < 129 * 129; ++i) out << (i == hole ? -9999.0 : 300.0 * island.samples[std::size_t(i)] - 20.0) << (i % 129 == 128 ? "\n" : " ");
+    };
+    const std::filesystem::path dem = dir.path / "island.asc", cache = dir.path / "island.asc.vtc";
+    writeGrid(dem, -1);
+    Settings s = islandScene(true, 512);
+    s.terrain.dem = dem.string();
+    s.terrain.stream.cache.clear();  // next to the map
+    const std::int64_t whole = wholeDemLoads();
+    REQUIRE(renderer().prepare(s).empty());
+    REQUIRE(renderer().terrain()->streamed());
+    CHECK(wholeDemLoads() == whole);  // read a row at a time
+    REQUIRE(std::filesystem::exists(cache));
+    TerrainCacheOptions o;
+    o.input = dem;
+    o.out = dir.path / "command.vtc";
+    o.tile = s.terrain.grid;
+    o.progress = false;
+    REQUIRE(runTerrainCache(o) == 0);
+    CHECK(wholeDemLoads() == whole);
+    auto bytes = [](const std::filesystem::path& f) {
+        std::ifstream in(f, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    CHECK(bytes(cache) == bytes(o.out));
+
+    // A nodata cell to fill: the fill spreads across the map, so this DEM is loaded whole (the
+    // same cache as the command's).
+    const std::filesystem::path holes = dir.path / "holes.asc";
+    writeGrid(holes, 64 * 129 + 64);
+    s.terrain.dem = holes.string();
+    REQUIRE(renderer().prepare(s).empty());
+    REQUIRE(renderer().terrain()->streamed());
+    CHECK(wholeDemLoads() == whole + 1);
+    o.input = holes;
+    o.out = dir.path / "holes-command.vtc";
+    REQUIRE(runTerrainCache(o) == 0);
+    CHECK(bytes(dir.path / "holes.asc.vtc") == bytes(o.out));
 }
 
 TEST_CASE("gl: a streamed terrain on a slow disk never shows a hole along a fast flight") {

@@ -1,8 +1,10 @@
 // DEMs through GDAL (terrain/dem.h): GeoTIFFs, an SRTM tile, an ESRI ASCII grid and a VRT of
 // four tiles written by GDAL inside the test load with the right spacing and heights; nodata is
-// filled or refused; unsupported input is refused naming the file and the reason.
+// filled or refused; unsupported input is refused naming the file and the reason; a DEM read a
+// row at a time (for its tile cache) gives the samples and the cache of the DEM loaded whole.
 #include "../temp_dir.h"
 #include "terrain/dem.h"
+#include "terrain/tile_cache.h"
 
 #include <doctest/doctest.h>
 #include <gdal.h>
@@ -76,6 +78,11 @@ std::string loadError(const fs::path& file, DemNodata nodata = DemNodata::Fill) 
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].file == file.string());
     return errors[0].message;
+}
+
+std::vector<char> bytesOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Height in metres of texel (x, z) of a loaded DEM.
@@ -237,6 +244,89 @@ TEST_CASE("dem: a VRT mosaic of four tiles loads as one map") {
     CHECK(dem.info.texel_x_m == 25.0);
     for (int z = 0; z < 8; ++z)
         for (int x = 0; x < 8; ++x) CHECK(metres(dem, x, z) == doctest::Approx(10.0 + x + 100.0 * z));
+}
+
+TEST_CASE("dem: read a row at a time, the same samples and the same tile cache as loaded whole") {
+    TempDir dir("rows");
+    // Heights that differ everywhere (a flip or a shift shows), in a UTM int16 raster, a south-up,
+    // east-to-west float one with a vertical unit, scale and exaggeration, and a VRT of two tiles.
+    const int w = 70, h = 41;
+    std::vector<double> v;
+    for (int z = 0; z < h; ++z)
+        for (int x = 0; x < w; ++x) v.push_back(std::round(200.0 + 40.0 * std::sin(0.31 * x) * std::cos(0.17 * z) + 2.0 * x + 3.0 * z));
+    writeRaster(dir / "utm.tif", Raster{w, h, 1, GDT_Int16, v, std::array<double, 6>{500000, 30, 0, 4500000, 0, -30}, 32633});
+    Raster flipped{w, h, 1, GDT_Float32, v, std::array<double, 6>{1000, -10, 0, 0, 0, 10}, 32633};
+    flipped.unit = "ft";
+    writeRaster(dir / "flip.tif", flipped);
+    std::vector<std::string> names;
+    for (int tx = 0; tx < 2; ++tx) {
+        std::vector<double> half;
+        for (int z = 0; z < h; ++z)
+            for (int x = 0; x < w / 2; ++x) half.push_back(v[std::size_t(z * w + tx * (w / 2) + x)]);
+        names.push_back((dir / ("half" + std::to_string(tx) + ".tif")).string());
+        writeRaster(names.back(), Raster{w / 2, h, 1, GDT_Int16, half,
+                                         std::array<double, 6>{300000.0 + tx * 25.0 * (w / 2), 25, 0, 5000000.0, 0, -25}, 32633});
+    }
+    std::vector<const char*> sources{names[0].c_str(), names[1].c_str()};
+    int usage_error = 0;
+    GDALDatasetH vrt = GDALBuildVRT((dir / "mosaic.vrt").c_str(), 2, nullptr, sources.data(), nullptr, &usage_error);
+    REQUIRE(vrt);
+    GDALClose(vrt);
+    for (const auto& [name, scale] : {std::pair{"utm.tif", 1.0}, std::pair{"flip.tif", 1.5}, std::pair{"mosaic.vrt", 1.0}}) {
+        CAPTURE(name);
+        const Dem dem = loadOk(dir / name, DemNodata::Fill, scale);
+        InputErrors errors;
+        bool fill_whole = true;
+        auto rows = DemRows::open(dir / name, DemNodata::Fill, scale, errors, fill_whole);
+        REQUIRE(rows);
+        CHECK(errors.empty());
+        CHECK_FALSE(fill_whole);
+        REQUIRE(rows->width() == dem.map.width);
+        REQUIRE(rows->height() == dem.map.height);
+        CHECK(rows->info().min_m == dem.info.min_m);
+        CHECK(rows->info().max_m == dem.info.max_m);
+        CHECK(rows->info().texel_x_m == dem.info.texel_x_m);
+        CHECK(rows->info().texel_z_m == dem.info.texel_z_m);
+        std::vector<float> row(std::size_t(rows->width()));
+        int differing = 0;
+        for (int z = 0; z < rows->height(); ++z) {
+            REQUIRE(rows->read(z, row.data()) == "");
+            for (int x = 0; x < rows->width(); ++x) differing += row[std::size_t(x)] != dem.map.at(x, z);
+        }
+        CHECK(differing == 0);
+        // The cache from the rows is the cache from the map held whole, byte for byte.
+        const TerrainMapping mapping = demMapping(dem.info, dem.map.width, dem.map.height);
+        const TileCacheKey key{1, 2, 3};
+        REQUIRE(buildTileCache(dem.map, mapping, key, 16, dir / "whole.vtc", true) == "");
+        auto again = DemRows::open(dir / name, DemNodata::Fill, scale, errors, fill_whole);
+        REQUIRE(again);
+        REQUIRE(buildTileCache(again->width(), again->height(), [&](int z, float* r) { return again->read(z, r); }, mapping, key,
+                               16, dir / "rows.vtc", true) == "");
+        CHECK(bytesOf(dir / "whole.vtc") == bytesOf(dir / "rows.vtc"));
+    }
+    // Nodata: refused as loadDem refuses it, or left to the whole load that fills it.
+    v[3] = -9999.0;
+    writeRaster(dir / "holes.tif", Raster{w, h, 1, GDT_Float32, v, std::array<double, 6>{0, 2, 0, 0, 0, -2}, 32633, -9999.0});
+    InputErrors errors;
+    bool fill_whole = false;
+    CHECK_FALSE(DemRows::open(dir / "holes.tif", DemNodata::Fill, 1.0, errors, fill_whole));
+    CHECK(errors.empty());
+    CHECK(fill_whole);
+    CHECK_FALSE(DemRows::open(dir / "holes.tif", DemNodata::Refuse, 1.0, errors, fill_whole));
+    CHECK_FALSE(fill_whole);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == (dir / "holes.tif").string());
+    CHECK(errors[0].message == loadError(dir / "holes.tif", DemNodata::Refuse));
+    // What is not a DEM is named as loadDem names it: no georeferencing, no file.
+    errors.clear();
+    writeRaster(dir / "plain.tif", Raster{4, 3, 1, GDT_Float32, ramp(4, 3), std::nullopt, 0});
+    CHECK_FALSE(DemRows::open(dir / "plain.tif", DemNodata::Fill, 1.0, errors, fill_whole));
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].message.find("no geotransform") != std::string::npos);
+    errors.clear();
+    CHECK_FALSE(DemRows::open(dir / "none.tif", DemNodata::Fill, 1.0, errors, fill_whole));
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == (dir / "none.tif").string());
 }
 
 TEST_CASE("dem: an SRTM .hgt tile and an ESRI ASCII grid load") {
