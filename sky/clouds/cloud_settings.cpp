@@ -37,6 +37,11 @@ void describe(SettingsVisitor& v, CloudsSettings& s) {
     v.field({"coverage_period_s", "s", "period of the coverage swing"}, s.coverage_period_s, 1.0f, 1.0e7f);
     v.field({"temporal", "", "accumulate the march over frames, reprojected along the clouds' depth (clouds.temporal)"}, s.temporal);
     v.field({"temporal_blend", "", "share of this frame's march once the history is full (1: no history)"}, s.temporal_blend, 0.01f, 1.0f);
+    v.field({"temporal_parallax_decay", "1/px",
+             "in motion the history's sample count falls by a factor e^(this * parallax) a frame, parallax being how far "
+             "its cloud point moved on screen against the far sky: a history reprojected along an estimated distance lags "
+             "by a share of it, and without the decay a sustained flight streaks the clouds (0: no decay)"},
+            s.temporal_parallax_decay, 0.0f, 100.0f);
     v.field({"march_subset", "",
              "with temporal: march 1 pixel of every march_subset per frame, in a Bayer order (1: every pixel, 4: 1 of 2x2, "
              "16: 1 of 4x4; other values round down to these); clouds.temporal reprojects the rest; a frame without "

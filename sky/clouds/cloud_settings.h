@@ -37,6 +37,7 @@ struct CloudsSettings {
     float coverage_period_s = 1800.0f; //!< s, period of the coverage swing, 1..1e7
     bool temporal = true;            //!< accumulate the march over frames ("clouds.temporal", docs/temporal.md)
     float temporal_blend = 0.0625f;  //!< share of this frame's march once history is full, 0.01..1 (1: no history)
+    float temporal_parallax_decay = 3.0f; //!< 1/px, in motion the history's sample count falls by e^(this * parallax px) a frame, 0..100
     int march_subset = 16;           //!< with temporal: 1 pixel of every march_subset marched per frame: 1 (all), 4 (2x2) or 16 (4x4), 1..16
     bool shadows = true;             //!< cloud shadows on the terrain ("clouds.shadow"): sun light through the layers
     int shadow_size = 256;           //!< texels per side of the shadow map, 16..2048

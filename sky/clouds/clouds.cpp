@@ -100,6 +100,7 @@ int Clouds::prepare(const RenderContext& rc, const CloudsSettings& clouds, const
     shadow_size_ = clouds.shadow_size;
     half_resolution_ = clouds.half_resolution;
     temporal_blend_ = clouds.temporal_blend;
+    temporal_parallax_decay_ = clouds.temporal_parallax_decay;
     if (!temporal_) release(rc.device);  // history off keeps nothing
     shadow_map_ = glm::vec4(float(rel.x), float(rel.y), float(1.0 / extent), float(slant));
     // Written while the graph is built: both passes of this frame read the same block.
@@ -251,7 +252,8 @@ TextureHandle Clouds::addTemporalPass(FrameGraph& graph, const RenderContext& rc
     const CloudsTemporalBlock block{
         glm::mat4(history ? previousClipFromRelative(history_view_, rc.view) : glm::dmat4(1.0)),
         glm::vec4(glm::vec3(history ? rc.view.position - history_view_.position : glm::dvec3(0.0)), float(frame_stride_)),
-        glm::vec4(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y)};
+        glm::vec4(temporal_blend_, history ? 0.0f : 1.0f, rc.jitter_ndc.x, rc.jitter_ndc.y),
+        glm::vec4(temporal_parallax_decay_, 0.0f, 0.0f, 0.0f)};
     history_view_ = rc.view;
     history_valid_ = true;
     const int read = history_current_, write = 1 - history_current_;

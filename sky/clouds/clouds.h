@@ -80,6 +80,7 @@ private:
     long long marched_pixels_ = 0;
     int frame_stride_ = 1;   // this frame's: subset_stride_, or 1 on a frame without usable history
     float temporal_blend_ = 0.0625f;
+    float temporal_parallax_decay_ = 3.0f;
     gl::Texture history_[2], history_distance_[2];
     int history_current_ = 0;
     int history_frames_ = 0;

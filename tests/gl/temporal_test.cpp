@@ -283,7 +283,7 @@ TEST_CASE("gl: the subset march in motion stays within a first frame's error, tu
     struct Motion {
         double deg_per_frame, m_per_frame, measured;
     };
-    for (const Motion m : {Motion{1.0, 0.0, 0.87}, Motion{3.0, 0.0, 0.89}, Motion{0.0, 10.0, 0.80}, Motion{0.0, 20.0, 1.11}}) {
+    for (const Motion m : {Motion{1.0, 0.0, 0.87}, Motion{3.0, 0.0, 0.89}, Motion{0.0, 10.0, 0.76}, Motion{0.0, 20.0, 1.05}}) {
         renderer().resetHistory();
         std::vector<double> last;
         for (int i = 0; i <= 12; ++i) {
@@ -295,5 +295,38 @@ TEST_CASE("gl: the subset march in motion stays within a first frame's error, tu
         MESSAGE(m.deg_per_frame << " deg and " << m.m_per_frame << " m a frame: " << ratio << "x a first frame's error (measured "
                 << m.measured << "x)");
         CHECK(ratio < 1.2);
+    }
+}
+
+TEST_CASE("gl: the subset march in sustained forward flight does not streak") {
+    // 160 frames (10 cycles) flying forward, TAA on, ending at the same view as the test above.
+    // A history is reprojected along an estimated cloud distance, so it lags by a share of the
+    // parallax every frame; with 16 visits' worth of history (256 frames) the lag built up into
+    // radial streaks and the error grew with the flight's length (160 frames: 1.21x a first
+    // frame's at 10 m a frame, 1.95x at 20 m). [clouds] temporal_parallax_decay shortens the
+    // history with the parallax (measured with the default 3/px: 0.45x and 0.83x; 0.5 m a frame:
+    // 0.21x against 0.23x without the decay, so slow motion keeps converging).
+    const ViewParams end = skyView(200.0, 15.0);
+    const std::vector<double> ref = reference(end, 16);
+    Settings s = cloudScene(true, 16);
+    s.taa.enabled = true;
+    const double first = meanSquaredError(settled(cloudScene(true, 16), end, 0), ref, kUpper);
+    const glm::dvec3 forward = directionFromAngles(200.0, 0.0);
+    struct Flight {
+        double m_per_frame, measured, limit;
+    };
+    for (const Flight f : {Flight{10.0, 0.45, 0.6}, Flight{20.0, 0.83, 1.0}}) {
+        constexpr int kFrames = 160;
+        renderer().resetHistory();
+        std::vector<double> last;
+        for (int i = 0; i <= kFrames; ++i) {
+            ViewParams v = end;
+            v.position -= forward * (f.m_per_frame * (kFrames - i));
+            last = frame(s, v);
+        }
+        const double ratio = meanSquaredError(last, ref, kUpper) / first;
+        MESSAGE(f.m_per_frame << " m a frame forward for " << kFrames << " frames: " << ratio
+                << "x a first frame's error (measured " << f.measured << "x)");
+        CHECK(ratio < f.limit);
     }
 }

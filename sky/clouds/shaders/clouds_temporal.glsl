@@ -7,7 +7,10 @@
 // with weight 1 - max(1 / frames, blend): a still camera averages up to 1 / blend frames of
 // blue-noise offsets. History is rejected outside the previous image, where its distance
 // disagrees with the reprojected one by more than a quarter (another cloud), on a camera cut
-// and after a reset (u_params.y).
+// and after a reset (u_params.y). In motion a history, reprojected along an estimated distance,
+// lags by a share of its point's parallax (its motion on screen against the far sky) every frame:
+// its sample count falls by e^(u_motion.x * parallax px) a frame, so that a sustained flight
+// refreshes it instead of smearing it into radial streaks.
 // Variant SUBSET, the subset march (u_shift.w = stride > 1, clouds_subset.glsl): the march is
 // 1/stride of this target's size and holds one pixel per stride x stride block. That pixel blends
 // its new sample into its history as above; every other pixel keeps its history (fetched
@@ -63,7 +66,7 @@ void main() {
         // on screen), which is exact for a still camera, not its marched neighbour's, which may
         // be another cloud's.
         vec2 own = texelFetch(u_history_distance, p, 0).rg;
-        if (own.y >= 1.0) t = own.x * 1000.0;
+        if (own.y > 0.0) t = own.x * 1000.0;
         ivec2 q = ivec2(floor(f));
         vec2 w = f - vec2(q);
         current = mix(mix(subsetTexel(u_clouds, q, last), subsetTexel(u_clouds, q + ivec2(1, 0), last), w.x),
@@ -112,11 +115,19 @@ void main() {
         float expected = length(point + u_shift.xyz);
         bool other_cloud = t > 0.0 && hd.x > 0.0 && abs(hd.x - expected) > 0.25 * expected;
 #endif
+        // Parallax: how far this cloud point moved on screen against a point at infinity. The
+        // count stays above 0, which marks a pixel marched at least once.
+        if (t > 0.0) {
+            vec4 far_clip = u_prev_clip * vec4(viewRay(uv) * CLOUD_FAR_M, 1.0);
+            vec2 far_uv = (far_clip.xy / max(far_clip.w, 1e-6) + u_params.zw) * 0.5 + 0.5;
+            float parallax_px = length((prev_uv - far_uv) * size);
+            hd.y = hd.y > 0.0 ? max(hd.y * exp(-u_motion.x * parallax_px), 0.01) : 0.0;
+        }
         if (!other_cloud && fresh) {
             frames = min(hd.y + 1.0, 1.0 / u_params.x);
             result = mix(clamp(history, lo, hi), current, max(1.0 / frames, u_params.x));
             if (t <= 0.0) t_out = hd.x;
-        } else if (!other_cloud && hd.y >= 1.0) {  // not marched this frame: the history as it is
+        } else if (!other_cloud && hd.y > 0.0) {  // not marched this frame: the history as it is
             frames = hd.y;
             result = history;
             t_out = hd.x;
