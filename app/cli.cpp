@@ -279,12 +279,7 @@ int check(const SceneOptions& scene) {
         CheckedTerrain checked;
         InputErrors more = validateSceneInputs(s, &checked);
         errors.insert(errors.end(), more.begin(), more.end());
-        GroundHeight terrain;
-        if (!checked.map.samples.empty())
-            terrain = [&checked, origin = s.terrain.origin](double x, double z) {
-                return terrainHeightAt(checked.map, checked.mapping, origin, x, z);
-            };
-        warnings = checkLightPlacement(s, terrain, scene.files(), scene.overrides);
+        warnings = checkLightPlacement(s, checked.ground, scene.files(), scene.overrides);
     }
     for (const InputError& w : warnings) std::fprintf(stderr, "vista: warning: %s\n", w.str().c_str());
     CameraPath::load(resolveInput(s.capture.path), errors, s.camera.fov_deg);

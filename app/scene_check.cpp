@@ -4,6 +4,9 @@
 #include "app/scene.h"
 #include "postfx/lut.h"
 #include "terrain/terrain.h"
+#include "terrain/tile_cache.h"
+
+#include <memory>
 
 namespace vista {
 
@@ -14,9 +17,30 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
         wanted.heightmap = resolveInput(s.terrain.heightmap).string();
         wanted.dem = resolveInput(s.terrain.dem).string();
         wanted = resolveMaterialPaths(std::move(wanted), resolveInput);
-        TerrainMapping mapping;
-        Heightmap checked = Terrain::loadChecked(wanted, errors, &mapping);  // the same function Terrain::load runs
-        if (terrain && !checked.samples.empty()) *terrain = {std::move(checked), mapping};
+        const glm::dvec3 origin = s.terrain.origin;
+        // The same functions Terrain::load runs.
+        if (wanted.stream.enabled) {
+            std::shared_ptr<TileCache> cache = openStreamCache(wanted, StreamCacheUse::Check, errors);
+            if (terrain && cache) {
+                auto sampler = std::make_shared<TileCacheSampler>(*cache);
+                terrain->ground = [cache, sampler, origin](double x, double z) {
+                    const TerrainMapping& m = cache->mapping();
+                    const double tx = (x - origin.x + m.sizeX() * 0.5) / m.texelSizeX();
+                    const double tz = (z - origin.z + m.sizeZ() * 0.5) / m.texelSizeZ();
+                    return origin.y + m.height_offset_m + m.height_scale_m * sampler->sample(tx, tz);
+                };
+            }
+        } else {
+            TerrainMapping mapping;
+            Heightmap checked = Terrain::loadChecked(wanted, errors, &mapping);
+            if (terrain && !checked.samples.empty()) {
+                terrain->map = std::move(checked);
+                terrain->mapping = mapping;
+                terrain->ground = [terrain, origin](double x, double z) {
+                    return terrainHeightAt(terrain->map, terrain->mapping, origin, x, z);
+                };
+            }
+        }
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare
     return errors;

@@ -182,12 +182,15 @@ bool checkMaterials(const TerrainSettings& s, int width, int height, InputErrors
 // same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time and a
 // DEM a row at a time, never whole, with loadChecked's checks on the size and each row;
 // anything else (EXR, RGB, .r16, a DEM with nodata to fill) loaded whole through loadChecked,
-// then dropped. reason: why it is built.
+// then dropped. reason: why it is built. Check only (StreamCacheUse::Check): the input is read
+// through and checked the same way, and nothing is written.
 bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const std::filesystem::path& file,
-                      const std::string& reason, InputErrors& errors) {
+                      const std::string& reason, StreamCacheUse use, InputErrors& errors) {
+    const bool write = use == StreamCacheUse::Build;
     const std::string input = s.dem.empty() ? s.heightmap : s.dem;
     auto announce = [&] {
-        std::fprintf(stderr, "building the tile cache %s (tile %d) for %s: %s\n", file.string().c_str(), s.grid,
+        if (write)
+            std::fprintf(stderr, "building the tile cache %s (tile %d) for %s: %s\n", file.string().c_str(), s.grid,
                      input.c_str(), reason.c_str());
     };
     std::string why;
@@ -204,6 +207,7 @@ bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const s
         TerrainMapping mapping;
         Heightmap map = Terrain::loadChecked(s, errors, &mapping);
         if (map.samples.empty()) return false;
+        if (!write) return true;
         announce();
         why = buildTileCache(map, mapping, key, s.grid, file, true);
         if (!why.empty()) errors.push_back({file.string(), 0, why});
@@ -222,7 +226,12 @@ bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const s
         if (bad.empty()) bad = heightRowProblem(row, width, z, s.height_scale_m, s.height_offset_m);
         return bad;
     };
-    why = buildTileCache(width, height, read, mapping, key, s.grid, file, true);
+    if (write) {
+        why = buildTileCache(width, height, read, mapping, key, s.grid, file, true);
+    } else {
+        std::vector<float> row(static_cast<std::size_t>(width));
+        for (int z = 0; z < height && bad.empty(); ++z) read(z, row.data());
+    }
     if (!bad.empty()) {
         const std::string prefix = input + ": ";
         errors.push_back({input, 0, bad.rfind(prefix, 0) == 0 ? bad.substr(prefix.size()) : bad});
@@ -392,7 +401,7 @@ bool Terrain::finishCreate(Terrain& terrain, const TerrainSettings& s, ShaderLib
     return true;
 }
 
-std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+std::unique_ptr<TileCache> openStreamCache(const TerrainSettings& s, StreamCacheUse use, InputErrors& errors) {
     if (!checkGrid(s.grid, errors)) return nullptr;
     if (s.tessellation.enabled) {
         errors.push_back({"[terrain.stream] enabled", 0, "streaming does not work with [terrain.tessellation] enabled (its "
@@ -432,13 +441,21 @@ std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderL
         const std::string reason = cache ? "it was built from another version of " + input
                                          : std::filesystem::exists(file) ? why : "there is none yet";
         cache.reset();
-        if (!buildStreamCache(s, key, file, reason, errors)) return nullptr;
+        if (!buildStreamCache(s, key, file, reason, use, errors) || use == StreamCacheUse::Check) return nullptr;
         cache = TileCache::open(file, why);
         if (!cache) {
             errors.push_back({file.string(), 0, why});
             return nullptr;
         }
     }
+    return cache;
+}
+
+std::unique_ptr<Terrain> Terrain::loadStreamed(const TerrainSettings& s, ShaderLibrary& shaders, InputErrors& errors) {
+    std::unique_ptr<TileCache> cache = openStreamCache(s, StreamCacheUse::Build, errors);
+    if (!cache) return nullptr;
+    const std::filesystem::path file = cache->file();
+    std::string why;
     std::unique_ptr<Terrain> t(new Terrain);
     t->source_ = s;
     t->mapping_ = cache->mapping();

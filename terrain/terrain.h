@@ -53,6 +53,14 @@ struct TerrainTiles {
 // without GL.
 double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z);
 
+// The tile cache a streamed terrain reads ([terrain.stream] cache, or next to the input),
+// checked against its input and the settings. A missing or stale one is built (Build: as
+// vista terrain-cache builds it), or, for `vista check` (Check), its input is read through and
+// checked as building it would check it, nothing is written, and null comes back without errors.
+enum class StreamCacheUse { Build, Check };
+class TileCache;
+std::unique_ptr<TileCache> openStreamCache(const TerrainSettings& s, StreamCacheUse use, InputErrors& errors);
+
 class Terrain {
 public:
     // Loads everything the settings name; on bad input returns null with errors (file, what

@@ -572,4 +572,39 @@ std::filesystem::path defaultTileCachePath(const std::filesystem::path& input) {
     return p;
 }
 
+double TileCacheSampler::sample(double tx, double tz) {
+    const TerrainMapping& m = cache_.mapping();
+    tx = std::clamp(tx, 0.0, double(m.width - 1));
+    tz = std::clamp(tz, 0.0, double(m.height - 1));
+    const TileCacheLevel& l0 = cache_.levels()[0];
+    const int x0 = std::min(int(tx), m.width - 2), z0 = std::min(int(tz), m.height - 2);
+    const int cx = std::min(x0 / cache_.tileSize(), l0.tiles_x - 1), cz = std::min(z0 / cache_.tileSize(), l0.tiles_z - 1);
+    const int id = cz * l0.tiles_x + cx;
+    auto it = tiles_.find(id);
+    if (it == tiles_.end()) {
+        CacheTile t;
+        std::string why;
+        if (!cache_.read(0, cx, cz, t, why)) return 0.0;
+        if (order_.size() >= 16) {
+            tiles_.erase(order_.front());
+            order_.pop_front();
+        }
+        order_.push_back(id);
+        it = tiles_.emplace(id, std::move(t)).first;
+    }
+    const CacheTile& t = it->second;
+    const int lx = x0 - cx * cache_.tileSize(), lz = z0 - cz * cache_.tileSize();
+    auto at = [&](int x, int z) { return double(t.heights[std::size_t(z) * std::size_t(t.width) + std::size_t(x)]); };
+    const double fx = tx - x0, fz = tz - z0;
+    const double top = at(lx, lz) + (at(lx + 1, lz) - at(lx, lz)) * fx;
+    const double bottom = at(lx, lz + 1) + (at(lx + 1, lz + 1) - at(lx, lz + 1)) * fx;
+    return top + (bottom - top) * fz;
+}
+
+std::size_t TileCacheSampler::memoryBytes() const {
+    std::size_t bytes = 0;
+    for (const auto& [id, t] : tiles_) bytes += t.heights.capacity() * sizeof(float) + t.normals.capacity();
+    return bytes;
+}
+
 }  // namespace vista

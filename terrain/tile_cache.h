@@ -16,10 +16,12 @@
 #include "terrain/lod_error.h"
 
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace vista {
@@ -120,6 +122,22 @@ private:
     std::vector<std::size_t> first_;  // first entry of each level
     std::vector<Entry> entries_;
     std::uint64_t errors_offset_ = 0, errors_hash_ = 0;
+};
+
+// Heights of a cache's map at continuous level-0 texel coordinates, bilinear (as
+// Heightmap::sample; clamped to the map), from level-0 tiles read on demand, the last 16 kept:
+// a streamed terrain's heightAt and `vista check`'s ground, without the map in memory.
+class TileCacheSampler {
+public:
+    explicit TileCacheSampler(const TileCache& cache) : cache_(cache) {}
+    // The map's units (metres = offset + scale * sample); 0 where a tile cannot be read.
+    double sample(double tx, double tz);
+    std::size_t memoryBytes() const;
+
+private:
+    const TileCache& cache_;
+    std::unordered_map<int, CacheTile> tiles_;
+    std::deque<int> order_;
 };
 
 // The cache file of an input when none is named: next to it, "<input>.vtc".

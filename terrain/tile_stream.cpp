@@ -52,6 +52,7 @@ std::unique_ptr<TileStream> TileStream::open(std::unique_ptr<TileCache> cache, i
         return nullptr;
     }
     s->cache_ = std::move(cache);
+    s->sampler_ = std::make_unique<TileCacheSampler>(*s->cache_);
     s->page_of_.assign(std::size_t(total), -1);
     s->level_of_page_.assign(std::size_t(pool_pages), -1);
     s->tile_of_page_.assign(std::size_t(pool_pages), -1);
@@ -316,34 +317,7 @@ void TileStream::worker() {
     }
 }
 
-double TileStream::sample(double tx, double tz) const {
-    const TerrainMapping& m = cache_->mapping();
-    tx = std::clamp(tx, 0.0, double(m.width - 1));
-    tz = std::clamp(tz, 0.0, double(m.height - 1));
-    const TileCacheLevel& l0 = cache_->levels()[0];
-    const int x0 = std::min(int(tx), m.width - 2), z0 = std::min(int(tz), m.height - 2);
-    const int cx = std::min(x0 / tile_, l0.tiles_x - 1), cz = std::min(z0 / tile_, l0.tiles_z - 1);
-    const int id = cz * l0.tiles_x + cx;
-    auto it = cpu_tiles_.find(id);
-    if (it == cpu_tiles_.end()) {
-        CacheTile t;
-        std::string why;
-        if (!cache_->read(0, cx, cz, t, why)) return 0.0;
-        if (cpu_order_.size() >= 16) {
-            cpu_tiles_.erase(cpu_order_.front());
-            cpu_order_.pop_front();
-        }
-        cpu_order_.push_back(id);
-        it = cpu_tiles_.emplace(id, std::move(t)).first;
-    }
-    const CacheTile& t = it->second;
-    const int lx = x0 - cx * tile_, lz = z0 - cz * tile_;
-    auto at = [&](int x, int z) { return double(t.heights[std::size_t(z) * std::size_t(t.width) + std::size_t(x)]); };
-    const double fx = tx - x0, fz = tz - z0;
-    const double top = at(lx, lz) + (at(lx + 1, lz) - at(lx, lz)) * fx;
-    const double bottom = at(lx, lz + 1) + (at(lx + 1, lz + 1) - at(lx, lz + 1)) * fx;
-    return top + (bottom - top) * fz;
-}
+double TileStream::sample(double tx, double tz) const { return sampler_->sample(tx, tz); }
 
 std::string TileStream::checkConsistency() const {
     for (std::size_t p = 0; p < tile_of_page_.size(); ++p) {
@@ -369,7 +343,7 @@ std::string TileStream::checkConsistency() const {
 std::size_t TileStream::memoryBytes() const {
     std::size_t bytes = cache_->memoryBytes() + page_of_.capacity() * sizeof(int) +
                         tile_of_page_.size() * (3 * sizeof(int) + sizeof(std::uint32_t) + 1);
-    for (const auto& [id, t] : cpu_tiles_) bytes += t.heights.capacity() * sizeof(float) + t.normals.capacity();
+    bytes += sampler_->memoryBytes();
     return bytes + gpuMemoryBytes();  // the GL's copies live in host memory on llvmpipe; counted once here
 }
 

@@ -142,8 +142,7 @@ private:
     bool stop_ = false;
 
     // heightAt's level-0 tiles (render thread only).
-    mutable std::unordered_map<int, CacheTile> cpu_tiles_;
-    mutable std::deque<int> cpu_order_;
+    std::unique_ptr<TileCacheSampler> sampler_;  // made with cache_
 };
 
 }  // namespace vista

@@ -2,6 +2,9 @@
 // memory, tile errors bound what each level misses of the full map, and a truncated, damaged
 // or stale cache is found.
 #include "../temp_dir.h"
+#include "app/scene_check.h"
+#include "app/terrain_cache_cmd.h"
+#include "terrain/terrain.h"
 #include "terrain/heightmap_rows.h"
 #include "terrain/tile_cache.h"
 
@@ -269,4 +272,69 @@ TEST_CASE("tile cache: the key follows the input's size, time and first bytes") 
     CHECK(b == c);
     CHECK(tileCacheKey(dir / "missing.bin", c) != "");
     CHECK(defaultTileCachePath("data/dem/x.tif") == fs::path("data/dem/x.tif.vtc"));
+}
+
+TEST_CASE("tile cache: vista check reads a streamed terrain from its cache, or its input row by row, never whole") {
+    TempDir dir("check");
+    const Heightmap map = island(97);
+    auto writeTiff = [](const fs::path& file, const Heightmap& m) {
+        auto out = OIIO::ImageOutput::create("tiff");
+        REQUIRE(out);
+        REQUIRE(out->open(file.string(), OIIO::ImageSpec(m.width, m.height, 1, OIIO::TypeDesc::FLOAT)));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, m.samples.data()));
+        REQUIRE(out->close());
+    };
+    const fs::path tiff = dir / "map.tif", cache = dir / "map.tif.vtc";
+    writeTiff(tiff, map);
+    Settings s;
+    s.terrain.heightmap = tiff.string();
+    s.terrain.size_m = 2000.0f;
+    s.terrain.height_scale_m = 400.0f;
+    s.terrain.height_offset_m = -50.0f;
+    s.terrain.origin = {100.0, 5.0, -40.0};
+    s.terrain.grid = 32;
+    s.terrain.stream.enabled = true;
+    s.terrain.stream.cache.clear();  // next to the map
+    s.grade.enabled = false;
+    const std::int64_t whole = wholeHeightmapLoads();
+
+    // No cache yet: the map is read through row by row, nothing is written, no ground.
+    CheckedTerrain checked;
+    CHECK(validateSceneInputs(s, &checked).empty());
+    CHECK_FALSE(checked.ground);
+    CHECK_FALSE(fs::exists(cache));
+    CHECK(wholeHeightmapLoads() == whole);
+
+    // With the cache: its ground, equal to the map's held whole.
+    TerrainCacheOptions o;
+    o.input = tiff;
+    o.tile = 32;
+    o.size_m = s.terrain.size_m;
+    o.height_scale_m = s.terrain.height_scale_m;
+    o.height_offset_m = s.terrain.height_offset_m;
+    o.progress = false;
+    REQUIRE(runTerrainCache(o) == 0);
+    CHECK(validateSceneInputs(s, &checked).empty());
+    REQUIRE(checked.ground);
+    CHECK(wholeHeightmapLoads() == whole);
+    const TerrainMapping mapping{2000.0, 400.0, -50.0, map.width, map.height};
+    for (double x : {-900.0, -333.3, 0.0, 451.7, 1099.0, 5000.0})
+        for (double z : {-1040.0, -12.5, 230.2, 959.9, -7000.0}) {
+            CAPTURE(x);
+            CAPTURE(z);
+            CHECK(checked.ground(x, z) == doctest::Approx(terrainHeightAt(map, mapping, s.terrain.origin, x, z)).epsilon(1e-6));  // Heightmap::sample is in float
+        }
+
+    // A bad row is found as loading would find it (naming the texel), and no cache is written.
+    Heightmap spike = map;
+    spike.samples[std::size_t(40 * 97 + 9)] = 1e6f;
+    const fs::path bad = dir / "spike.tif";
+    writeTiff(bad, spike);
+    s.terrain.heightmap = bad.string();
+    const InputErrors errors = validateSceneInputs(s, &checked);
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].file == bad.string());
+    CHECK(errors[0].message.find("at texel (9, 40) is outside the accepted") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "spike.tif.vtc"));
+    CHECK(wholeHeightmapLoads() == whole);
 }
