@@ -27,25 +27,25 @@ namespace {
 
 FrameRenderer& renderer() { return test::fileRenderer(); }
 
-const std::filesystem::path& islandFile() {
+// The island at size² samples (1025 or 4097), made once per process.
+const std::filesystem::path& islandFile(int size = 1025) {
     static test::TempDir dir("terrain-stream");
-    static std::filesystem::path file = [] {
-        std::filesystem::path f = dir.path / "island.png";
-        REQUIRE(saveHeightmapPng16(f, generateIsland(IslandParams{1025, 7})).empty());
-        return f;
-    }();
-    return file;
+    static std::map<int, std::filesystem::path> files;
+    auto [it, made] = files.try_emplace(size, dir.path / ("island" + std::to_string(size) + ".png"));
+    if (made) REQUIRE(saveHeightmapPng16(it->second, generateIsland(IslandParams{size, 7})).empty());
+    return it->second;
 }
 
-Settings islandScene(bool stream, int pool_pages = 2048) {
+// The island 4096 m across (4 m texels at 1025², 1 m at 4097²).
+Settings islandScene(bool stream, int pool_pages = 2048, int size = 1025) {
     Settings s;
     test::terrainOnly(s);
     s.sky.enabled = false;  // uncovered pixels keep alpha 0: holes can be counted
-    s.terrain.heightmap = islandFile().string();
+    s.terrain.heightmap = islandFile(size).string();
     s.terrain.size_m = 4096.0f;
     s.terrain.height_scale_m = 600.0f;
     s.terrain.stream.enabled = stream;
-    s.terrain.stream.cache = (islandFile().parent_path() / "island.vtc").string();
+    s.terrain.stream.cache = (islandFile(size).parent_path() / ("island" + std::to_string(size) + ".vtc")).string();
     s.terrain.stream.pool_pages = pool_pages;
     s.terrain.stream.prefetch_frames = 0;
     return s;
@@ -87,57 +87,65 @@ ViewParams overview() { return ViewParams{{0.0, 700.0, 0.0}, 30.0, -60.0, 60.0, 
 }  // namespace
 
 TEST_CASE("gl: a streamed terrain matches the in-memory one once its tiles settle, and never shows a hole before") {
-    TileStream::setReadDelayForTests(0);
-    const Frame memory = render(islandScene(false), overview());
-    REQUIRE(memory.holes == 0);
-    const MinMaxQuadtree tree = renderer().terrain()->quadtree();
-    const GridErrors exact = renderer().terrain()->gridErrors();
+    // 1025² and 4097² (the size: 1 m texels, 5,461 tiles of 32 in 8 levels).
+    for (int size : {1025, 4097}) {
+        CAPTURE(size);
+        TileStream::setReadDelayForTests(0);
+        const Frame memory = render(islandScene(false, 2048, size), overview());
+        REQUIRE(memory.holes == 0);
+        const MinMaxQuadtree tree = renderer().terrain()->quadtree();
+        const GridErrors exact = renderer().terrain()->gridErrors();
 
-    const Settings s = islandScene(true);
-    const Frame first = render(s, overview());  // builds the cache, opens the pool: coarsest levels only
-    Terrain* t = renderer().terrain();
-    REQUIRE(t);
-    REQUIRE(t->streamed());
-    CHECK(t->heightmap().samples.empty());  // the map is not kept
-    // The quadtree from the cache's index: the in-memory one's boxes, one float step wider at most.
-    REQUIRE(t->quadtree().levels() == tree.levels());
-    for (int l = 0; l < tree.levels(); ++l)
-        for (int z = 0; z < tree.nodesPerSide(l).y; ++z)
-            for (int x = 0; x < tree.nodesPerSide(l).x; ++x) {
-                const glm::vec2 a = tree.minMax(l, x, z), b = t->quadtree().minMax(l, x, z);
-                REQUIRE(b.x <= a.x);
-                REQUIRE(b.y >= a.y);
-                REQUIRE(a.x - b.x <= 1e-3f);
-                REQUIRE(b.y - a.y <= 1e-3f);
-            }
-    // The grid errors from the cache: the exact ones computed in memory, bit for bit, so the
-    // selection picks the same nodes.
-    const GridErrors& streamed = t->gridErrors();
-    REQUIRE(streamed.levels() == exact.levels());
-    REQUIRE(streamed.cells() == exact.cells());
-    for (int l = 0; l < exact.levels(); ++l)
-        for (int z = 0; z < exact.cells().y; ++z)
-            for (int x = 0; x < exact.cells().x; ++x) REQUIRE(streamed.at(l, x, z) == exact.at(l, x, z));
-    CHECK(first.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
-    CHECK(first.holes == 0);
-    CHECK(first.counters.at("terrain.stream.missing") > 0);
+        const Settings s = islandScene(true, 2048, size);
+        const Frame first = render(s, overview());  // builds the cache, opens the pool: coarsest levels only
+        Terrain* t = renderer().terrain();
+        REQUIRE(t);
+        REQUIRE(t->streamed());
+        CHECK(t->heightmap().samples.empty());  // the map is not kept
+        // The quadtree from the cache's index: the in-memory one's boxes, one float step wider at most.
+        REQUIRE(t->quadtree().levels() == tree.levels());
+        for (int l = 0; l < tree.levels(); ++l)
+            for (int z = 0; z < tree.nodesPerSide(l).y; ++z)
+                for (int x = 0; x < tree.nodesPerSide(l).x; ++x) {
+                    const glm::vec2 a = tree.minMax(l, x, z), b = t->quadtree().minMax(l, x, z);
+                    REQUIRE(b.x <= a.x);
+                    REQUIRE(b.y >= a.y);
+                    REQUIRE(a.x - b.x <= 1e-3f);
+                    REQUIRE(b.y - a.y <= 1e-3f);
+                }
+        // The grid errors from the cache: the exact ones computed in memory, bit for bit, so the
+        // selection picks the same nodes.
+        const GridErrors& streamed = t->gridErrors();
+        REQUIRE(streamed.levels() == exact.levels());
+        REQUIRE(streamed.cells() == exact.cells());
+        for (int l = 0; l < exact.levels(); ++l)
+            for (int z = 0; z < exact.cells().y; ++z)
+                for (int x = 0; x < exact.cells().x; ++x) REQUIRE(streamed.at(l, x, z) == exact.at(l, x, z));
+        CHECK(first.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
+        CHECK(first.holes == 0);
+        CHECK(first.counters.at("terrain.stream.missing") > 0);
 
-    t->stream()->settle();
-    const Frame settled = render(s, overview());
-    CHECK(settled.holes == 0);
-    CHECK(settled.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
-    CHECK(settled.counters.at("terrain.stream.missing") == 0);
-    CHECK(settled.counters.at("terrain.stream.missing_error_px") == 0.0);
-    CHECK(t->stream()->checkConsistency() == "");
-    const double db_settled = psnr(memory, settled), db_first = psnr(memory, first);
-    std::printf("stream: PSNR against in-memory: first frame %.1f dB, settled %.1f dB; missing %g -> %g nodes, "
-                "%.2f px added; resident %g pages; memory %.2f MB streamed; %g nodes streamed, %g in memory\n",
-                db_first, db_settled, first.counters.at("terrain.stream.missing"),
-                settled.counters.at("terrain.stream.missing"), first.counters.at("terrain.stream.missing_error_px"),
-                settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6,
-                settled.counters.at("terrain.nodes"), memory.counters.at("terrain.nodes"));
-    CHECK(db_settled >= 40.0);
-    CHECK(db_first < db_settled - 3.0);  // the comparison sees the coarser first frame
+        t->stream()->settle();
+        const Frame settled = render(s, overview());
+        CHECK(settled.holes == 0);
+        CHECK(settled.counters.at("terrain.nodes") == memory.counters.at("terrain.nodes"));
+        CHECK(settled.counters.at("terrain.stream.missing") == 0);
+        CHECK(settled.counters.at("terrain.stream.missing_error_px") == 0.0);
+        CHECK(t->stream()->checkConsistency() == "");
+        const double db_settled = psnr(memory, settled), db_first = psnr(memory, first);
+        std::printf("stream %d²: PSNR against in-memory: first frame %.1f dB, settled %.1f dB; missing %g -> %g nodes, "
+                    "%.2f px added; resident %g pages; memory %.2f MB streamed; %g nodes streamed, %g in memory\n",
+                    size, db_first, db_settled, first.counters.at("terrain.stream.missing"),
+                    settled.counters.at("terrain.stream.missing"), first.counters.at("terrain.stream.missing_error_px"),
+                    settled.counters.at("terrain.stream.resident"), double(t->memoryBytes()) / 1e6,
+                    settled.counters.at("terrain.nodes"), memory.counters.at("terrain.nodes"));
+        CHECK(db_first < db_settled - 3.0);  // the comparison sees the coarser first frame
+        // At 1025² (4 m texels) the images agree to 58.6 dB. At 4097² (1 m texels) measured
+        // 31.6 dB: the geometry is the same (the same nodes from the same grid errors), but a node
+        // shades with the normals of its own level's tile, where in memory every pixel reads the
+        // full map's, whose detail below the node's spacing shows at 1 m texels (docs/dem.md).
+        CHECK(db_settled >= (size == 1025 ? 40.0 : 30.0));
+    }
 }
 
 TEST_CASE("gl: the first streamed load of a TIFF builds its cache a band of rows at a time, as vista terrain-cache does, and rebuilds a version 1 cache") {
