@@ -82,6 +82,11 @@ double psnr(const Frame& a, const Frame& b) {
     return psnrFromMse(mse / double(std::max<std::size_t>(n, 1)), std::max(peak, 1e-6));
 }
 
+std::string bytes(const std::filesystem::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // Looking down at the island from 700 m: the map (sea floor included) fills the view.
 ViewParams overview() { return ViewParams{{0.0, 700.0, 0.0}, 30.0, -60.0, 60.0, 0.5, 160, 90}; }
 
@@ -182,10 +187,6 @@ TEST_CASE("gl: the first streamed load of a TIFF builds its cache a band of rows
     o.height_offset_m = s.terrain.height_offset_m;
     o.progress = false;
     REQUIRE(runTerrainCache(o) == 0);
-    auto bytes = [](const std::filesystem::path& f) {
-        std::ifstream in(f, std::ios::binary);
-        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    };
     const std::string built = bytes(cache);
     CHECK(built == bytes(o.out));
 
@@ -246,10 +247,6 @@ TEST_CASE("gl: the first streamed load of a DEM builds its cache a row at a time
     o.progress = false;
     REQUIRE(runTerrainCache(o) == 0);
     CHECK(wholeDemLoads() == whole);
-    auto bytes = [](const std::filesystem::path& f) {
-        std::ifstream in(f, std::ios::binary);
-        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    };
     CHECK(bytes(cache) == bytes(o.out));
 
     // A nodata cell to fill: the fill spreads across the map, so this DEM is loaded whole (the
