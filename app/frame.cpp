@@ -147,6 +147,11 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
         const double half = m.size_m * 0.5;
         const glm::dvec3 origin = s.terrain.origin;
         const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+        if (std::string why = scatterBudgetProblem(s.objects, area); !why.empty()) {
+            errors.push_back({"[objects]", 0, why});
+            objects_.release();
+            return;
+        }
         const auto resolve = [](const std::string& f) { return resolveInput(f); };
         if (!objects_->place(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), resolve, errors)) {
             objects_.release();

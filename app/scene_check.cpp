@@ -3,10 +3,12 @@
 
 #include "app/scene.h"
 #include "postfx/lut.h"
+#include "terrain/scatter/scatter.h"
 #include "terrain/terrain.h"
 #include "terrain/tile_cache.h"
 
 #include <memory>
+#include <optional>
 
 namespace vista {
 
@@ -18,9 +20,11 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
         wanted.dem = resolveInput(s.terrain.dem).string();
         wanted = resolveMaterialPaths(std::move(wanted), resolveInput);
         const glm::dvec3 origin = s.terrain.origin;
+        std::optional<TerrainMapping> extent;  // where the scatter rules would place
         // The same functions Terrain::load runs.
         if (wanted.stream.enabled) {
             std::shared_ptr<TileCache> cache = openStreamCache(wanted, StreamCacheUse::Check, errors);
+            if (cache) extent = cache->mapping();
             if (terrain && cache) {
                 auto sampler = std::make_shared<TileCacheSampler>(*cache);
                 terrain->ground = [cache, sampler, origin](double x, double z) {
@@ -33,6 +37,7 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
         } else {
             TerrainMapping mapping;
             Heightmap checked = Terrain::loadChecked(wanted, errors, &mapping);
+            if (!checked.samples.empty()) extent = mapping;
             if (terrain && !checked.samples.empty()) {
                 terrain->map = std::move(checked);
                 terrain->mapping = mapping;
@@ -40,6 +45,12 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
                     return terrainHeightAt(terrain->map, terrain->mapping, origin, x, z);
                 };
             }
+        }
+        // As FrameRenderer::prepareObjects: over the terrain's extent.
+        if (extent && objectsWanted(s.objects)) {
+            const double half = extent->size_m * 0.5;
+            const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+            if (std::string why = scatterBudgetProblem(s.objects, area); !why.empty()) errors.push_back({"[objects]", 0, why});
         }
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare

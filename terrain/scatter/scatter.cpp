@@ -3,13 +3,27 @@
 
 #include "renderer/random.h"
 
+#include <glm/common.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace vista {
 namespace {
+
+std::string shortNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+std::string metres(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", v);
+    return text;
+}
 
 double unit(std::uint32_t h, std::uint32_t k) { return double(hashInts(h, k, 0x2545f491u, 0x9e3779b9u) >> 8) / 16777216.0; }
 
@@ -50,6 +64,22 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
     for (int k = min_cell.y; k <= max_cell.y; ++k)
         for (int i = min_cell.x; i <= max_cell.x; ++i) scatterCell(r, {i, k}, ground, out);
     return out;
+}
+
+std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area) {
+    const glm::dvec2 extent = glm::max(area.max - area.min, glm::dvec2(0.0));
+    double total = 0.0;
+    std::string each;
+    for (const NamedScatter& sc : s.scatters) {
+        if (sc.rule.files.empty()) continue;
+        const double n = sc.rule.density * extent.x * extent.y;
+        total += n;
+        each += (each.empty() ? "" : ", ") + ("scatter." + sc.name) + " " + shortNumber(n);
+    }
+    if (total <= kMaxScatterCandidates) return {};
+    return "the scatter rules would test " + shortNumber(total) + " candidates over the terrain's " + metres(extent.x) +
+           " x " + metres(extent.y) + " m (" + each + "); accepted: at most " + shortNumber(kMaxScatterCandidates) +
+           " (scatter covers the whole terrain, it is not streamed: lower the densities, or [objects] enabled = false)";
 }
 
 std::vector<ObjectPlacement> placeObjects(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area) {

@@ -184,3 +184,23 @@ TEST_CASE("scatter: placeObjects gives each list entry's instances in file order
     t.objects.scatters[0].rule.seed = 10;
     CHECK(!samePlacement(s.objects, t.objects));
 }
+
+TEST_CASE("scatter: a terrain too large to scatter whole is refused, naming the rules, before any is placed") {
+    ObjectsSettings s;
+    ScatterRule forest;
+    forest.files = {"tree.glb"};
+    forest.density = 0.003;  // the default scene's forest
+    ScatterRule rocks = forest;
+    rocks.density = 0.0003;
+    s.scatters = {{"forest", forest}, {"rocks", rocks}};
+    // The default island (8192 m): 0.22 M candidates.
+    CHECK(scatterBudgetProblem(s, ScatterArea{{-4096.0, -4096.0}, {4096.0, 4096.0}}) == "");
+    // A 131 km map: 56 M.
+    const std::string why = scatterBudgetProblem(s, ScatterArea{{-65536.0, -65536.0}, {65536.0, 65536.0}});
+    CHECK(why.find("5.67e+07 candidates over the terrain's 131072 x 131072 m") != std::string::npos);
+    CHECK(why.find("scatter.forest 5.15e+07, scatter.rocks 5.15e+06") != std::string::npos);
+    CHECK(why.find("accepted: at most 4e+06") != std::string::npos);
+    // Rules without files place nothing and count nothing.
+    for (NamedScatter& sc : s.scatters) sc.rule.files.clear();
+    CHECK(scatterBudgetProblem(s, ScatterArea{{-65536.0, -65536.0}, {65536.0, 65536.0}}) == "");
+}
