@@ -61,6 +61,10 @@ public:
         glfwTerminate();
     }
     Backend backend() const override { return Backend::Glfw; }
+    bool makeCurrent() override {
+        glfwMakeContextCurrent(window_);
+        return window_ != nullptr;
+    }
     GLFWwindow* window() override { return window_; }
 
     bool create(const ContextOptions& o, std::string& error) {
@@ -107,6 +111,7 @@ public:
         if (context_) OSMesaDestroyContext(context_);
     }
     Backend backend() const override { return Backend::OSMesa; }
+    bool makeCurrent() override { return context_ && OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1); }
 
     bool create(const ContextOptions& o, std::string& error) {
         const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
@@ -144,6 +149,9 @@ public:
         }
     }
     Backend backend() const override { return Backend::Egl; }
+    bool makeCurrent() override {
+        return context_ != EGL_NO_CONTEXT && eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
+    }
 
     bool create(const ContextOptions& o, std::string& error) {
         display_ = openDisplay();

@@ -20,6 +20,9 @@ class GlContext {
 public:
     virtual ~GlContext() = default;
     virtual Backend backend() const = 0;
+    // Makes this context current again on the calling thread (after another was made and destroyed,
+    // as a capture run in the same process does).
+    virtual bool makeCurrent() = 0;
     // The GLFW window, or null for headless contexts.
     virtual GLFWwindow* window() { return nullptr; }
     std::string renderer() const;  // GL_RENDERER

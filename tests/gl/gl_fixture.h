@@ -19,7 +19,7 @@
 
 namespace vista::test {
 
-// The context, made on first use. From then on every new ShaderLibrary (each FrameRenderer's)
+// The context, made on first use and made current on every call. From then on every new ShaderLibrary (each FrameRenderer's)
 // throws on a request for a variant outside its list and on a failed compile (strict mode): a
 // reachable variant missing from allPrograms() fails the test that reaches it.
 inline GlContext& glContext() {
@@ -30,6 +30,8 @@ inline GlContext& glContext() {
         if (!c) FAIL("cannot create an OSMesa context: " << error);
         return c;
     }();
+    // A capture run by a test makes, and destroys, a context of its own.
+    if (!context->makeCurrent()) FAIL("cannot make the test's OSMesa context current again");
     return *context;
 }
 
