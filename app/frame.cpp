@@ -146,19 +146,42 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
         const TerrainMapping& m = terrain_->mapping();
         const double half = m.size_m * 0.5;
         const glm::dvec3 origin = s.terrain.origin;
-        const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
-        if (std::string why = scatterBudgetProblem(s.objects, area); !why.empty()) {
-            errors.push_back({"[objects]", 0, why});
-            objects_.release();
-            return;
+        ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+        // Rules too dense for the whole terrain are placed around the camera: its start pose here,
+        // then wherever a frame takes it (placeLocalObjects).
+        objects_local_ = !scatterBudgetProblem(s.objects, area).empty();
+        if (objects_local_) {
+            objects_centre_ = {s.camera.position.x, s.camera.position.z};
+            objects_reach_m_ = s.objects.max_distance_m;
+            area = localScatterArea(objects_centre_, objects_reach_m_);
+            if (std::string why = scatterBudgetProblem(s.objects, area, "the camera-local"); !why.empty()) {
+                errors.push_back({"[objects]", 0, why});
+                objects_.release();
+                return;
+            }
         }
+        const std::size_t known = errors.size();
         const auto resolve = [](const std::string& f) { return resolveInput(f); };
-        if (!objects_->place(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), resolve, errors)) {
+        // A camera-local placement may hold no instance yet where it starts (over the sea).
+        if (!objects_->place(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), resolve, errors) &&
+            !(objects_local_ && errors.size() == known)) {
             objects_.release();
             return;
         }
     }
     objects_->setEmissive(s.objects.emissive_nits);
+}
+
+bool FrameRenderer::placeLocalObjects(const Settings& s, glm::dvec3 camera) {
+    const glm::dvec2 xz(camera.x, camera.z);
+    if (!objects_local_ || (!localScatterStale(objects_centre_, xz, objects_reach_m_) &&
+                            objects_reach_m_ == double(s.objects.max_distance_m)))
+        return false;
+    const ScatterArea area = localScatterArea(xz, s.objects.max_distance_m);
+    if (!scatterBudgetProblem(s.objects, area, "the camera-local").empty()) return false;  // keeps the last placement
+    objects_centre_ = xz;
+    objects_reach_m_ = s.objects.max_distance_m;
+    return objects_->replaceInstances(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area));
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
@@ -565,6 +588,8 @@ FrameRenderer::Casters FrameRenderer::addCullPasses(FrameGraph& graph, const Fra
     // Objects are culled next; their cull pass follows the grass's, so the one caster handle the
     // shadow passes read orders them after both.
     if (f.terrain && objects_ && s.objects.enabled && !f.shadow_view) {
+        report.counters["objects.replaced"] = placeLocalObjects(s, f.view.position) ? 1.0 : 0.0;
+        report.counters["objects.local"] = objects_local_ ? 1.0 : 0.0;
         c.object_lists = objects_->addCullPass(graph, rc, s.objects, counters_, request.count_objects, c.caster.reads);
         const ObjectStats& st = objects_->stats();
         report.counters["objects.models"] = double(st.models);

@@ -218,6 +218,9 @@ private:
                                              const ViewParams* fit_view, FrameReport& report, const ShadowCaster& extra);
     // Loads and places [objects] on the terrain (drops the Objects when nothing is placed).
     void prepareObjects(const Settings& s, InputErrors& errors);
+    // A camera-local placement (rules too dense for the whole terrain) placed again around camera
+    // once it has moved far enough from the last one's centre; true when it was.
+    bool placeLocalObjects(const Settings& s, glm::dvec3 camera);
     // This frame's local lights (false: none can light a visible point, add no light pass).
     bool prepareLocalLights(const RenderContext& rc, const Settings& s, FrameReport& report);
     // The shadowed spot lights among them (false: none; then spot_shadows_ is reset).
@@ -256,6 +259,9 @@ private:
     FeatureSlot<Water> water_{"water.memory_bytes"};  // empty while [water] is off (no buffers)
     FeatureSlot<Objects> objects_{"objects.memory_bytes"};  // empty while [objects] places nothing (no buffers)
     ObjectsSettings objects_placed_for_;  // the lists objects_ was placed from (while it exists)
+    bool objects_local_ = false;          // placed around the camera, not over the whole terrain
+    glm::dvec2 objects_centre_{0.0};      // ... around this point (world x, z)
+    double objects_reach_m_ = 0.0;        // ... for this [objects] max_distance_m
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
     FeatureSlot<TemporalAA> taa_{nullptr};  // empty while [postfx.taa] is off (its bytes count as postfx's)

@@ -46,11 +46,15 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
                 };
             }
         }
-        // As FrameRenderer::prepareObjects: over the terrain's extent.
+        // As FrameRenderer::prepareObjects: over the terrain's extent, or around the camera when
+        // the rules are too dense for it.
         if (extent && objectsWanted(s.objects)) {
             const double half = extent->size_m * 0.5;
             const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
-            if (std::string why = scatterBudgetProblem(s.objects, area); !why.empty()) errors.push_back({"[objects]", 0, why});
+            const ScatterArea local = localScatterArea({s.camera.position.x, s.camera.position.z}, s.objects.max_distance_m);
+            if (!scatterBudgetProblem(s.objects, area).empty())
+                if (std::string why = scatterBudgetProblem(s.objects, local, "the camera-local"); !why.empty())
+                    errors.push_back({"[objects]", 0, why});
         }
     }
     if (s.grade.enabled && !s.grade.lut.empty()) loadCube(resolveInput(s.grade.lut), errors);  // as PostChain::prepare

@@ -112,6 +112,8 @@ bool Objects::place(const std::vector<ObjectPlacement>& placements,
         files_.push_back(path);
         return index[path] = int(models_.size()) - 1;
     };
+    entries_.clear();
+    entry_models_.clear();
     for (const ObjectPlacement& placement : placements) {
         std::vector<int> ms;
         for (const std::string& f : placement.files) ms.push_back(model(f, placement.entry));
@@ -119,51 +121,68 @@ bool Objects::place(const std::vector<ObjectPlacement>& placements,
             const int m = ms[std::size_t(p.file)];
             if (m >= 0) placed_[std::size_t(m)].push_back(p);
         }
+        entries_.emplace_back(placement.entry, placement.files);
+        entry_models_.push_back(std::move(ms));
     }
     upload();
     stats_.place_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats_.instances > 0;
 }
 
+bool Objects::replaceInstances(const std::vector<ObjectPlacement>& placements) {
+    if (placements.size() != entries_.size()) return false;
+    for (std::size_t i = 0; i < placements.size(); ++i)
+        if (placements[i].entry != entries_[i].first || placements[i].files != entries_[i].second) return false;
+    const auto start = std::chrono::steady_clock::now();
+    for (auto& list : placed_) list.clear();
+    for (std::size_t i = 0; i < placements.size(); ++i)
+        for (const PlacedObject& p : placements[i].instances) {
+            const int m = entry_models_[i][std::size_t(p.file)];
+            if (m >= 0) placed_[std::size_t(m)].push_back(p);
+        }
+    uploadInstances();
+    stats_.place_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
 void Objects::upload() {
-    stats_ = ObjectStats{};
-    draws_list_.clear();
+    uploadModels();
+    uploadInstances();
+}
+
+void Objects::uploadModels() {
     textures_.clear();
     image_textures_.clear();
     image_linear_.clear();
     vertices_ = {};
     indices_ = {};
-    instances_ = {};
-    models_buffer_ = {};
-    visible_ = {};
-    counts_ = {};
-    draws_ = {};
     vao_ = {};
     impostors_.clear();
     spheres_.clear();
     baked_ = false;
-    instance_count_ = 0;
-    for (const auto& p : placed_) instance_count_ += p.size();
-    stats_.models = models_.size();
-    stats_.instances = instance_count_;
-    if (instance_count_ == 0) return;
+    model_bytes_ = 0;
+    model_triangles_ = 0;
+    if (models_.empty()) return;
 
     // One vertex and index array for every model (offsets applied per draw).
     std::vector<MeshVertex> vertices;
     std::vector<std::uint32_t> indices;
-    std::vector<std::uint32_t>& vertex_base = vertex_base_;
-    std::vector<std::uint32_t>& index_base = index_base_;
-    vertex_base.clear();
-    index_base.clear();
+    vertex_base_.clear();
+    index_base_.clear();
     for (const Model& m : models_) {
-        vertex_base.push_back(std::uint32_t(vertices.size()));
-        index_base.push_back(std::uint32_t(indices.size()));
+        vertex_base_.push_back(std::uint32_t(vertices.size()));
+        index_base_.push_back(std::uint32_t(indices.size()));
         vertices.insert(vertices.end(), m.vertices.begin(), m.vertices.end());
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
-        stats_.triangles += m.lods[0].triangles();
+        model_triangles_ += m.lods[0].triangles();
+        const glm::vec3 centre = 0.5f * (m.bounds_min + m.bounds_max);
+        float radius = 0.0f;
+        for (const MeshVertex& v : m.vertices) radius = std::max(radius, glm::length(v.position - centre));
+        spheres_.push_back(glm::vec4(centre, radius));
     }
     // The impostor card: a unit quad in (right, up), uv from its lower left corner.
-    const std::uint32_t quad_vertex = std::uint32_t(vertices.size()), quad_index = std::uint32_t(indices.size());
+    quad_vertex_ = std::uint32_t(vertices.size());
+    quad_index_ = std::uint32_t(indices.size());
     for (int c = 0; c < 4; ++c) {
         MeshVertex v;
         v.uv = glm::vec2(float(c == 1 || c == 2), float(c >= 2));
@@ -171,75 +190,8 @@ void Objects::upload() {
         vertices.push_back(v);
     }
     for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(i);
-    // The anchor: instances are stored relative to it in floats (camera-relative in the shaders).
-    glm::dvec3 sum(0.0);
-    for (const auto& list : placed_)
-        for (const PlacedObject& p : list) sum += p.position;
-    anchor_ = glm::floor(sum / double(instance_count_));
-
-    std::vector<GpuInstance> instances;
-    std::vector<GpuModel> gpu_models;
-    instances.reserve(instance_count_);
-    std::uint32_t slot = 0;
-    for (std::size_t m = 0; m < models_.size(); ++m) {
-        const Model& model = models_[m];
-        const glm::vec3 centre = 0.5f * (model.bounds_min + model.bounds_max);
-        float radius = 0.0f;
-        for (const MeshVertex& v : model.vertices) radius = std::max(radius, glm::length(v.position - centre));
-        GpuModel g{glm::vec4(centre, radius), glm::uvec4(0), glm::uvec4(0), glm::uvec4(0)};
-        spheres_.push_back(g.sphere);
-        const std::uint32_t n = std::uint32_t(placed_[m].size());
-        for (int k = 0; k < 4; ++k) {
-            g.region[k] = slot;
-            slot += n;
-            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
-            g.triangles[k] = std::uint32_t(model.lods[std::size_t(lod)].triangles());
-        }
-        g.impostor = glm::uvec4(slot, 2u, 0u, 0u);
-        slot += n;
-        gpu_models.push_back(g);
-        for (const PlacedObject& p : placed_[m])
-            instances.push_back({glm::vec4(glm::vec3(p.position - anchor_), p.yaw_rad),
-                                 glm::vec4(p.scale, float(m), radius * p.scale, 0.0f)});
-    }
-    group_count_ = models_.size() * kObjectGroups;
-
-    // Indirect commands: per model, per group k (LOD 0..2, shadow), per primitive; then its impostors.
-    std::vector<DrawCommand> commands;
-    for (std::size_t m = 0; m < models_.size(); ++m) {
-        const Model& model = models_[m];
-        for (int k = 0; k < 4; ++k) {
-            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
-            for (const ModelPrimitive& p : model.lods[std::size_t(lod)].primitives) {
-                Draw d;
-                d.model = int(m);
-                d.group = int(m) * kObjectGroups + k;
-                d.material = p.material;
-                d.region = gpu_models[m].region[k];
-                d.offset = commands.size() * sizeof(DrawCommand);
-                d.shadow = k == kShadowGroup;
-                draws_list_.push_back(d);
-                commands.push_back({p.index_count, 0, index_base[m] + p.first_index, std::int32_t(vertex_base[m]),
-                                    std::uint32_t(d.group)});
-            }
-        }
-        Draw d;
-        d.model = int(m);
-        d.group = int(m) * kObjectGroups + kImpostorGroup;
-        d.region = gpu_models[m].impostor.x;
-        d.offset = commands.size() * sizeof(DrawCommand);
-        d.impostor = true;
-        draws_list_.push_back(d);
-        commands.push_back({6, 0, quad_index, std::int32_t(quad_vertex), std::uint32_t(d.group)});
-    }
-
     vertices_ = gl::Buffer::create(GLsizeiptr(vertices.size() * sizeof(MeshVertex)), vertices.data(), 0, "objects vertices");
     indices_ = gl::Buffer::create(GLsizeiptr(indices.size() * 4), indices.data(), 0, "objects indices");
-    instances_ = gl::Buffer::create(GLsizeiptr(instances.size() * sizeof(GpuInstance)), instances.data(), 0, "objects instances");
-    models_buffer_ = gl::Buffer::create(GLsizeiptr(gpu_models.size() * sizeof(GpuModel)), gpu_models.data(), 0, "objects models");
-    visible_ = gl::Buffer::create(GLsizeiptr(std::max<std::uint32_t>(slot, 1) * 4), nullptr, 0, "objects visible lists");
-    counts_ = gl::Buffer::create(GLsizeiptr(group_count_ * 4), nullptr, GL_DYNAMIC_STORAGE_BIT, "objects group counts");
-    draws_ = gl::Buffer::create(GLsizeiptr(commands.size() * sizeof(DrawCommand)), commands.data(), 0, "objects draws");
     vao_ = gl::createVertexArray("objects");
     glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(MeshVertex));
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
@@ -283,10 +235,94 @@ void Objects::upload() {
             make(mat.occlusion_texture, false);
         }
     }
+    model_bytes_ = std::size_t(vertices_.size() + indices_.size()) + texture_bytes + white_.bytes() + flat_normal_.bytes();
+}
+
+void Objects::uploadInstances() {
+    const std::size_t impostor_bytes = stats_.impostor_bytes;
+    stats_ = ObjectStats{};
+    stats_.impostor_bytes = baked_ ? impostor_bytes : 0;
+    draws_list_.clear();
+    instances_ = {};
+    models_buffer_ = {};
+    visible_ = {};
+    counts_ = {};
+    draws_ = {};
+    instance_count_ = 0;
+    for (const auto& p : placed_) instance_count_ += p.size();
+    stats_.models = models_.size();
+    stats_.instances = instance_count_;
+    stats_.triangles = model_triangles_;
+    if (models_.empty()) return;
+
+    // The anchor: instances are stored relative to it in floats (camera-relative in the shaders).
+    glm::dvec3 sum(0.0);
+    for (const auto& list : placed_)
+        for (const PlacedObject& p : list) sum += p.position;
+    anchor_ = instance_count_ > 0 ? glm::floor(sum / double(instance_count_)) : glm::dvec3(0.0);
+
+    std::vector<GpuInstance> instances;
+    std::vector<GpuModel> gpu_models;
+    instances.reserve(instance_count_);
+    std::uint32_t slot = 0;
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const Model& model = models_[m];
+        const float radius = spheres_[m].w;
+        GpuModel g{spheres_[m], glm::uvec4(0), glm::uvec4(0), glm::uvec4(0)};
+        const std::uint32_t n = std::uint32_t(placed_[m].size());
+        for (int k = 0; k < 4; ++k) {
+            g.region[k] = slot;
+            slot += n;
+            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
+            g.triangles[k] = std::uint32_t(model.lods[std::size_t(lod)].triangles());
+        }
+        g.impostor = glm::uvec4(slot, 2u, 0u, 0u);
+        slot += n;
+        gpu_models.push_back(g);
+        for (const PlacedObject& p : placed_[m])
+            instances.push_back({glm::vec4(glm::vec3(p.position - anchor_), p.yaw_rad),
+                                 glm::vec4(p.scale, float(m), radius * p.scale, 0.0f)});
+    }
+    group_count_ = models_.size() * kObjectGroups;
+
+    // Indirect commands: per model, per group k (LOD 0..2, shadow), per primitive; then its impostors.
+    std::vector<DrawCommand> commands;
+    for (std::size_t m = 0; m < models_.size(); ++m) {
+        const Model& model = models_[m];
+        for (int k = 0; k < 4; ++k) {
+            const int lod = k < 3 ? std::min(k, int(model.lods.size()) - 1) : std::min(kShadowLod, int(model.lods.size()) - 1);
+            for (const ModelPrimitive& p : model.lods[std::size_t(lod)].primitives) {
+                Draw d;
+                d.model = int(m);
+                d.group = int(m) * kObjectGroups + k;
+                d.material = p.material;
+                d.region = gpu_models[m].region[k];
+                d.offset = commands.size() * sizeof(DrawCommand);
+                d.shadow = k == kShadowGroup;
+                draws_list_.push_back(d);
+                commands.push_back({p.index_count, 0, index_base_[m] + p.first_index, std::int32_t(vertex_base_[m]),
+                                    std::uint32_t(d.group)});
+            }
+        }
+        Draw d;
+        d.model = int(m);
+        d.group = int(m) * kObjectGroups + kImpostorGroup;
+        d.region = gpu_models[m].impostor.x;
+        d.offset = commands.size() * sizeof(DrawCommand);
+        d.impostor = true;
+        draws_list_.push_back(d);
+        commands.push_back({6, 0, quad_index_, std::int32_t(quad_vertex_), std::uint32_t(d.group)});
+    }
+    // At least one instance's room: a camera-local placement may hold none for a while.
+    instances.resize(std::max<std::size_t>(instances.size(), 1));
+    instances_ = gl::Buffer::create(GLsizeiptr(instances.size() * sizeof(GpuInstance)), instances.data(), 0, "objects instances");
+    models_buffer_ = gl::Buffer::create(GLsizeiptr(gpu_models.size() * sizeof(GpuModel)), gpu_models.data(), 0, "objects models");
+    visible_ = gl::Buffer::create(GLsizeiptr(std::max<std::uint32_t>(slot, 1) * 4), nullptr, 0, "objects visible lists");
+    counts_ = gl::Buffer::create(GLsizeiptr(group_count_ * 4), nullptr, GL_DYNAMIC_STORAGE_BIT, "objects group counts");
+    draws_ = gl::Buffer::create(GLsizeiptr(commands.size() * sizeof(DrawCommand)), commands.data(), 0, "objects draws");
     collectBlend();
-    stats_.memory_bytes = std::size_t(vertices_.size() + indices_.size() + instances_.size() + models_buffer_.size() +
-                                      visible_.size() + counts_.size() + draws_.size()) +
-                          texture_bytes + white_.bytes() + flat_normal_.bytes();
+    stats_.memory_bytes = model_bytes_ + std::size_t(instances_.size() + models_buffer_.size() + visible_.size() +
+                                                     counts_.size() + draws_.size()) + stats_.impostor_bytes;
 }
 
 BufferHandle Objects::addCullPass(FrameGraph& graph, const RenderContext& rc, const ObjectDrawSettings& s,

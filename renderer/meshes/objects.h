@@ -89,6 +89,10 @@ public:
     // model by model in the order given. Returns false when nothing is to be drawn.
     bool place(const std::vector<ObjectPlacement>& placements,
                const std::function<std::filesystem::path(const std::string&)>& resolve, InputErrors& errors);
+    // Replaces the instances with placements' when they list the entries and files place() was
+    // given (a camera-local scatter moving with the view): the models, their LODs, textures and
+    // impostors stay. False (nothing changed) when the lists differ: place() them instead.
+    bool replaceInstances(const std::vector<ObjectPlacement>& placements);
     // The luminance of emissive factor 1 (ObjectDrawSettings::emissive_nits) the draws use.
     void setEmissive(float nits) { emissive_nits_ = nits; }
 
@@ -162,7 +166,9 @@ private:
     struct Texture {
         gl::Texture texture;
     };
-    void upload();
+    void upload();           // uploadModels(), then uploadInstances()
+    void uploadModels();     // vertices, indices, textures; drops the impostors
+    void uploadInstances();  // placed_: instances, per-model regions, indirect commands
     void drawList(const RenderContext& rc, const glm::mat4& matrix, bool shadow, const ObjectDrawSettings* fade) const;
     void drawImpostors(const RenderContext& rc, const ObjectDrawSettings& s) const;
     // Sets a material's factors in block, binds its textures and sets its face culling.
@@ -183,6 +189,12 @@ private:
     std::vector<Impostor> impostors_;  // per model, once baked
     std::vector<glm::vec4> spheres_;   // per model: bounding sphere (centre, radius), model space
     std::vector<std::uint32_t> vertex_base_, index_base_;
+    std::uint32_t quad_vertex_ = 0, quad_index_ = 0;  // the impostor card's first vertex and index
+    std::size_t model_bytes_ = 0;                      // uploadModels()'s buffers and textures
+    std::uint64_t model_triangles_ = 0;                // every model's full LOD
+    // What place() was given: per placement its entry, its files and their models (-1: failed).
+    std::vector<std::pair<std::string, std::vector<std::string>>> entries_;
+    std::vector<std::vector<int>> entry_models_;
     bool baked_ = false;
     std::vector<Blend> blend_;
     struct SortedItem {

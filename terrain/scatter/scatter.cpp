@@ -66,7 +66,17 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
     return out;
 }
 
-std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area) {
+ScatterArea localScatterArea(glm::dvec2 centre, double max_distance_m) {
+    const double half = kLocalScatterReach * max_distance_m;
+    return {centre - half, centre + half};
+}
+
+bool localScatterStale(glm::dvec2 centre, glm::dvec2 camera, double max_distance_m) {
+    const glm::dvec2 d = glm::abs(camera - centre);
+    return std::max(d.x, d.y) > (kLocalScatterReach - 1.0) * max_distance_m;
+}
+
+std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area, const std::string& where) {
     const glm::dvec2 extent = glm::max(area.max - area.min, glm::dvec2(0.0));
     double total = 0.0;
     std::string each;
@@ -77,9 +87,9 @@ std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& ar
         each += (each.empty() ? "" : ", ") + ("scatter." + sc.name) + " " + shortNumber(n);
     }
     if (total <= kMaxScatterCandidates) return {};
-    return "the scatter rules would test " + shortNumber(total) + " candidates over the terrain's " + metres(extent.x) +
+    return "the scatter rules would test " + shortNumber(total) + " candidates over " + where + " " + metres(extent.x) +
            " x " + metres(extent.y) + " m (" + each + "); accepted: at most " + shortNumber(kMaxScatterCandidates) +
-           " (scatter covers the whole terrain, it is not streamed: lower the densities, or [objects] enabled = false)";
+           " (lower the densities or [objects] max_distance_m, or [objects] enabled = false)";
 }
 
 std::vector<ObjectPlacement> placeObjects(const ObjectsSettings& s, const GroundFunction& ground, const ScatterArea& area) {

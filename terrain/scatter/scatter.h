@@ -44,12 +44,21 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
                                         const GroundFunction& ground);
 
 // Candidates (ground samples; most become instances) that placeObjects() may test over an area,
-// all scatter rules together: the default scene's island tests about 0.22 M. Scatter rules cover
-// the whole terrain (they are not streamed), so on a larger map they would take minutes and
-// gigabytes (a 131 km map: 51 M candidates): such a scene is refused instead.
+// all scatter rules together: the default scene's island tests about 0.22 M. Beyond it the rules
+// are placed around the camera instead of over the whole terrain (a 131 km map would test 57 M:
+// minutes and gigabytes), and an area around the camera that still tests more is refused.
 constexpr double kMaxScatterCandidates = 4.0e6;
 // "" when s's scatter rules test at most kMaxScatterCandidates over area; else why, naming them.
-std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area);
+// where: what the area is ("the terrain's", "the camera-local").
+std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area, const std::string& where = "the terrain's");
+
+// A camera-local placement covers a square of half side kLocalScatterReach * max_distance_m
+// around its centre and is placed again once the camera is (kLocalScatterReach - 1) *
+// max_distance_m from that centre: every instance nearer than max_distance_m (all that is
+// drawn) is always placed, and a cell holds the same instances whichever placement holds it.
+constexpr double kLocalScatterReach = 1.5;
+ScatterArea localScatterArea(glm::dvec2 centre, double max_distance_m);
+bool localScatterStale(glm::dvec2 centre, glm::dvec2 camera, double max_distance_m);
 
 // What s's lists place, one ObjectPlacement per entry in file order: each object.NAME (on the
 // ground when it asks, ground may be empty), then each scatter.NAME over area (its files, no

@@ -10,6 +10,7 @@
 #include "renderer/half.h"
 #include "renderer_fixture.h"
 #include "terrain/heightmap.h"
+#include "terrain/scatter/scatter.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -841,3 +842,57 @@ TEST_CASE("gl: a transparent pane half in a pillar's spot or point-light shadow 
 }
 
 }  // namespace transparent_case
+
+TEST_CASE("gl: scatter rules too dense for the whole terrain are placed around the camera, and again as it moves") {
+    test::TempDir dir("objects-local");
+    const Heightmap map{65, 65, std::vector<float>(65 * 65, kFlat)};
+    const std::filesystem::path file = dir.path / "flat.png";
+    REQUIRE(saveHeightmapPng16(file, map).empty());
+    Settings s = bareScene(file);
+    s.terrain.size_m = 400000.0f;  // 160 M candidates over the whole terrain: more than kMaxScatterCandidates
+    s.objects.max_distance_m = 500.0f;
+    ScatterRule rule;
+    rule.files = {(vistaRoot() / "data/props/tree.glb").string()};
+    s.objects.scatters.push_back({"trees", rule});
+    s.camera.position = {0.0, 50.0, 0.0};
+    REQUIRE_FALSE(scatterBudgetProblem(s.objects, ScatterArea{{-2.0e5, -2.0e5}, {2.0e5, 2.0e5}}).empty());
+
+    // The x, z of the placed instances, against every candidate of the camera-local area's cells
+    // (the flat ground keeps them all).
+    auto placed = [&] {
+        std::vector<std::pair<double, double>> xz;
+        for (const auto& list : renderer().objects()->placed())
+            for (const PlacedObject& p : list) xz.emplace_back(p.position.x, p.position.z);
+        std::sort(xz.begin(), xz.end());
+        return xz;
+    };
+    auto expected = [&](glm::dvec2 centre) {
+        const ScatterArea area = localScatterArea(centre, s.objects.max_distance_m);
+        const GroundFunction flat = [](double, double) { return GroundSample{true, 0.0, 0.0, 1.0}; };
+        std::vector<std::pair<double, double>> xz;
+        for (const PlacedObject& p : scatterRegion(rule, scatterCellOf(rule, area.min), scatterCellOf(rule, area.max), flat))
+            xz.emplace_back(p.position.x, p.position.z);
+        std::sort(xz.begin(), xz.end());
+        return xz;
+    };
+    auto at = [](double x, double z) { return ViewParams{{x, 50.0, z}, 0.0, -10.0, 60.0, 0.5, 64, 36}; };
+
+    const Frame start = render(s, at(0.0, 0.0));
+    CHECK(start.report.counters.at("objects.local") == 1.0);
+    CHECK(start.report.counters.at("objects.replaced") == 0.0);  // placed around [camera] position by prepare
+    const auto first = placed();
+    CHECK(first.size() > 1000);  // 1500 m square at 0.001 per m^2: about 2250
+    CHECK(first == expected({0.0, 0.0}));
+    // Within (1.5 - 1) x max_distance_m of the centre: kept.
+    CHECK(render(s, at(200.0, -200.0)).report.counters.at("objects.replaced") == 0.0);
+    CHECK(placed() == first);
+    // Beyond it: placed around the camera.
+    CHECK(render(s, at(3000.0, 0.0)).report.counters.at("objects.replaced") == 1.0);
+    CHECK(placed() == expected({3000.0, 0.0}));
+    // Back: the same instances as at the start (a cell always holds the same ones).
+    CHECK(render(s, at(0.0, 0.0)).report.counters.at("objects.replaced") == 1.0);
+    CHECK(placed() == first);
+    // Over the whole terrain when it fits: the island, not the camera's surroundings.
+    s.terrain.size_m = 8192.0f;
+    CHECK(render(s, at(0.0, 0.0)).report.counters.at("objects.local") == 0.0);
+}
