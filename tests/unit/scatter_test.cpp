@@ -185,7 +185,7 @@ TEST_CASE("scatter: placeObjects gives each list entry's instances in file order
     CHECK(!samePlacement(s.objects, t.objects));
 }
 
-TEST_CASE("scatter: a terrain too large to scatter whole is refused, naming the rules, before any is placed") {
+TEST_CASE("scatter: the candidate budget over an area names each rule's count (beyond it the rules are placed around the camera)") {
     ObjectsSettings s;
     ScatterRule forest;
     forest.files = {"tree.glb"};
