@@ -39,15 +39,16 @@ namespace {
 
 // The ground under a point for the placement of objects: height, slope from central differences
 // over 1 m, and the terrain's grass weight there (terrain/material_weights.h, as the terrain shades it).
+// Safe on another thread (Terrain::heightSampler) while the terrain lives.
 GroundFunction terrainGround(const Terrain& terrain, const TerrainSettings& ts) {
-    return [t = &terrain, ts, m = terrain.mapping()](double x, double z) {
+    return [height = terrain.heightSampler(), ts, m = terrain.mapping()](double x, double z) {
         GroundSample g;
         const double half = m.size_m * 0.5;
         if (std::abs(x - ts.origin.x) > half || std::abs(z - ts.origin.z) > half) return g;
         g.valid = true;
-        g.height_m = t->heightAt(x, z);
-        const double dx = (t->heightAt(x + 1.0, z) - t->heightAt(x - 1.0, z)) * 0.5;
-        const double dz = (t->heightAt(x, z + 1.0) - t->heightAt(x, z - 1.0)) * 0.5;
+        g.height_m = height(x, z);
+        const double dx = (height(x + 1.0, z) - height(x - 1.0, z)) * 0.5;
+        const double dz = (height(x, z + 1.0) - height(x, z - 1.0)) * 0.5;
         g.slope = std::sqrt(dx * dx + dz * dz);
         const double normal_y = 1.0 / std::sqrt(1.0 + g.slope * g.slope);
         const double h = (g.height_m - ts.origin.y - m.height_offset_m) / m.height_scale_m;
@@ -100,6 +101,7 @@ std::string FrameRenderer::programErrors() const {
 InputErrors FrameRenderer::prepare(const Settings& s) {
     InputErrors errors = postfx_.prepare(s, s.grade.lut.empty() ? std::filesystem::path() : resolveInput(s.grade.lut));
     if (!s.terrain.enabled) {
+        objects_next_ = {};  // waits for a placement reading the terrain
         objects_.release();  // objects stand on the terrain
         terrain_.release();  // a disabled feature keeps nothing allocated
         terrain_failed_ = false;
@@ -124,6 +126,7 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
                                                            terrain_source_.splat_map == wanted.splat_map &&
                                                            terrain_source_.splat_layers == wanted.splat_layers;
     if (!same) {
+        objects_next_ = {};
         objects_.release();  // placed on the old terrain
         terrain_.release();
         terrain_.adopt(Terrain::load(wanted, shaders_, errors));
@@ -137,10 +140,12 @@ InputErrors FrameRenderer::prepare(const Settings& s) {
 
 void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
     if (!terrain_ || !objectsWanted(s.objects)) {
+        objects_next_ = {};
         objects_.release();  // nothing placed: no object, no buffers
         return;
     }
     if (!objects_ || !samePlacement(s.objects, objects_placed_for_)) {
+        objects_next_ = {};  // placing other lists
         objects_.use();
         objects_placed_for_ = s.objects;
         const TerrainMapping& m = terrain_->mapping();
@@ -173,18 +178,42 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
 }
 
 bool FrameRenderer::placeLocalObjects(const Settings& s, glm::dvec3 camera) {
+    if (!objects_local_ || !objects_) return false;
     const glm::dvec2 xz(camera.x, camera.z);
-    if (!objects_local_ || (!localScatterStale(objects_centre_, xz, objects_reach_m_) &&
-                            objects_reach_m_ == double(s.objects.max_distance_m)))
-        return false;
-    const ScatterArea area = localScatterArea(xz, s.objects.max_distance_m);
-    if (!scatterBudgetProblem(s.objects, area, "the camera-local").empty()) return false;  // keeps the last placement
-    objects_centre_ = xz;
-    objects_reach_m_ = s.objects.max_distance_m;
-    return objects_->replaceInstances(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area));
+    const double reach = s.objects.max_distance_m;
+    auto adopt = [&](const std::vector<ObjectPlacement>& placements, glm::dvec2 centre) {
+        objects_centre_ = centre;
+        objects_reach_m_ = reach;
+        return objects_->replaceInstances(placements);
+    };
+    // A placement finished in the background, still covering the camera: swapped in.
+    if (objects_next_.valid() && objects_next_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+        const std::vector<ObjectPlacement> placements = objects_next_.get();
+        if (objects_next_reach_m_ == reach && !localScatterStale(objects_next_centre_, xz, reach))
+            return adopt(placements, objects_next_centre_);
+    }
+    const double drift = localScatterDrift(objects_centre_, xz) / reach;
+    const bool budget = scatterBudgetProblem(s.objects, localScatterArea(xz, reach), "the camera-local").empty();
+    if (!budget) return false;  // keeps the last placement
+    if (objects_reach_m_ != reach || drift > kLocalScatterReach - 1.0) {
+        // The camera left the margin before a background placement came: placed now, the frame waits.
+        objects_next_ = {};
+        return adopt(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), localScatterArea(xz, reach)), xz);
+    }
+    if (!objects_next_.valid() && drift > 0.5 * (kLocalScatterReach - 1.0)) {
+        // Half way to the margin: the next placement, around the camera here, on another thread.
+        objects_next_centre_ = xz;
+        objects_next_reach_m_ = reach;
+        objects_next_ = std::async(std::launch::async, [objects = s.objects, ground = terrainGround(*terrain_, s.terrain),
+                                                        area = localScatterArea(xz, reach)] {
+            return placeObjects(objects, ground, area);
+        });
+    }
+    return false;
 }
 
 void FrameRenderer::adoptTerrain(std::unique_ptr<Terrain> terrain) {
+    objects_next_ = {};
     ++terrain_generation_;
     terrain_.adopt(std::move(terrain));
     terrain_failed_ = false;
@@ -595,6 +624,7 @@ FrameRenderer::Casters FrameRenderer::addCullPasses(FrameGraph& graph, const Fra
         report.counters["objects.models"] = double(st.models);
         report.counters["objects.placed"] = double(st.instances);
     } else if (!f.terrain) {
+        objects_next_ = {};
         objects_.release();
     }
     if (c.object_lists.valid() && s.objects.cast_shadows) {

@@ -31,6 +31,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <future>
 #include <utility>
 #include <map>
 #include <optional>
@@ -114,6 +115,7 @@ public:
     // name the same source.
     void adoptTerrain(std::unique_ptr<Terrain> terrain);
     std::unique_ptr<Terrain> releaseTerrain() {  // benches swap terrains
+        objects_next_ = {};
         ++terrain_generation_;
         return terrain_.take();
     }
@@ -262,6 +264,12 @@ private:
     bool objects_local_ = false;          // placed around the camera, not over the whole terrain
     glm::dvec2 objects_centre_{0.0};      // ... around this point (world x, z)
     double objects_reach_m_ = 0.0;        // ... for this [objects] max_distance_m
+    // The next camera-local placement, computed on another thread once the camera is half way to
+    // the margin (around objects_next_centre_ for objects_next_reach_m_). Declared after the
+    // terrain it reads: destroyed (waited for) first; prepare() and a new terrain wait for it too.
+    std::future<std::vector<ObjectPlacement>> objects_next_;
+    glm::dvec2 objects_next_centre_{0.0};
+    double objects_next_reach_m_ = 0.0;
     PostChain postfx_;                    // post chain state (adapted exposure)
     BlueNoiseTexture blue_noise_;         // made once; bound to binding::kBlueNoise every frame
     FeatureSlot<TemporalAA> taa_{nullptr};  // empty while [postfx.taa] is off (its bytes count as postfx's)

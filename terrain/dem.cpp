@@ -54,6 +54,11 @@ struct QuietErrors {
     }
 };
 
+}  // namespace
+
+// Named (not anonymous): DemRows::Impl holds them.
+namespace dem_io {
+
 struct Dataset {
     GDALDatasetH h = nullptr;
     explicit Dataset(GDALDatasetH handle) : h(handle) {}
@@ -63,6 +68,13 @@ struct Dataset {
     Dataset(const Dataset&) = delete;
     Dataset& operator=(const Dataset&) = delete;
 };
+
+}  // namespace dem_io
+
+namespace {
+
+using dem_io::Dataset;
+
 
 std::string lowercase(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -129,6 +141,11 @@ std::string texelMetres(GDALDatasetH ds, const double gt[6], int height, DemInfo
            "geographic latitude/longitude";
 }
 
+}  // namespace
+
+// Named (not anonymous): DemRows::Impl holds them.
+namespace dem_io {
+
 // A band's samples as metres (its scale and offset, the vertical unit, the exaggeration); its
 // nodata value and non-finite samples are holes.
 struct SampleUnits {
@@ -160,6 +177,15 @@ struct Orientation {
     int fileRow(int z) const { return flip_z ? height - 1 - z : z; }
     int column(int x) const { return flip_x ? width - 1 - x : x; }
 };
+
+}  // namespace dem_io
+
+namespace {
+
+using dem_io::Orientation;
+using dem_io::SampleUnits;
+using dem_io::sampleUnits;
+
 
 // Reads the band as metres into map (row 0 north, column 0 west) and marks the nodata cells.
 std::string readHeights(GDALDatasetH ds, GDALRasterBandH band, const double gt[6], double vertical_scale, Heightmap& map,

@@ -513,6 +513,17 @@ double Terrain::heightAt(double x, double z) const {
     return o.y + mapping_.height_offset_m + mapping_.height_scale_m * stream_->sample(tx, tz);
 }
 
+std::function<double(double, double)> Terrain::heightSampler() const {
+    if (!stream_) return [this](double x, double z) { return terrainHeightAt(map_, mapping_, source_.origin, x, z); };
+    auto sampler = std::make_shared<TileCacheSampler>(stream_->cache());
+    return [this, sampler](double x, double z) {
+        const glm::dvec3& o = source_.origin;
+        const double tx = (x - o.x + mapping_.sizeX() * 0.5) / mapping_.texelSizeX();
+        const double tz = (z - o.z + mapping_.sizeZ() * 0.5) / mapping_.texelSizeZ();
+        return o.y + mapping_.height_offset_m + mapping_.height_scale_m * sampler->sample(tx, tz);
+    };
+}
+
 void Terrain::updateStream(const TerrainSettings& s, const Selection& drawn) {
     TileStream& st = *stream_;
     st.beginFrame();

@@ -91,6 +91,9 @@ public:
 
     // Ground height (m) at world x/z, bilinear; clamped to the map's edge outside it.
     double heightAt(double x, double z) const;
+    // heightAt for another thread (a streamed terrain's reads tiles through a sampler of its own);
+    // valid while this terrain lives.
+    std::function<double(double, double)> heightSampler() const;
 
     // Selects nodes for a camera (world position, camera-relative view-projection) and fills
     // the instance list with those in its frustum. error_scale is screenErrorScale() of the

@@ -71,9 +71,13 @@ ScatterArea localScatterArea(glm::dvec2 centre, double max_distance_m) {
     return {centre - half, centre + half};
 }
 
-bool localScatterStale(glm::dvec2 centre, glm::dvec2 camera, double max_distance_m) {
+double localScatterDrift(glm::dvec2 centre, glm::dvec2 camera) {
     const glm::dvec2 d = glm::abs(camera - centre);
-    return std::max(d.x, d.y) > (kLocalScatterReach - 1.0) * max_distance_m;
+    return std::max(d.x, d.y);
+}
+
+bool localScatterStale(glm::dvec2 centre, glm::dvec2 camera, double max_distance_m) {
+    return localScatterDrift(centre, camera) > (kLocalScatterReach - 1.0) * max_distance_m;
 }
 
 std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& area, const std::string& where) {

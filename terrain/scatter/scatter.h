@@ -59,6 +59,8 @@ std::string scatterBudgetProblem(const ObjectsSettings& s, const ScatterArea& ar
 constexpr double kLocalScatterReach = 1.5;
 ScatterArea localScatterArea(glm::dvec2 centre, double max_distance_m);
 bool localScatterStale(glm::dvec2 centre, glm::dvec2 camera, double max_distance_m);
+// How far camera is from centre along x or z, whichever is farther (m).
+double localScatterDrift(glm::dvec2 centre, glm::dvec2 camera);
 
 // What s's lists place, one ObjectPlacement per entry in file order: each object.NAME (on the
 // ground when it asks, ground may be empty), then each scatter.NAME over area (its files, no

@@ -892,6 +892,14 @@ TEST_CASE("gl: scatter rules too dense for the whole terrain are placed around t
     // Back: the same instances as at the start (a cell always holds the same ones).
     CHECK(render(s, at(0.0, 0.0)).report.counters.at("objects.replaced") == 1.0);
     CHECK(placed() == first);
+    // Half way to the margin: the next placement is made on another thread and swapped in by a
+    // later frame, without the frame waiting for it.
+    CHECK(render(s, at(150.0, 0.0)).report.counters.at("objects.replaced") == 0.0);
+    CHECK(placed() == first);
+    bool swapped = false;
+    for (int i = 0; i < 200 && !swapped; ++i) swapped = render(s, at(150.0, 0.0)).report.counters.at("objects.replaced") == 1.0;
+    CHECK(swapped);
+    CHECK(placed() == expected({150.0, 0.0}));
     // Over the whole terrain when it fits: the island, not the camera's surroundings.
     s.terrain.size_m = 8192.0f;
     CHECK(render(s, at(0.0, 0.0)).report.counters.at("objects.local") == 0.0);
