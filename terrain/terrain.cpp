@@ -514,13 +514,15 @@ double Terrain::heightAt(double x, double z) const {
 }
 
 std::function<double(double, double)> Terrain::heightSampler() const {
-    if (!stream_) return [this](double x, double z) { return terrainHeightAt(map_, mapping_, source_.origin, x, z); };
+    // The placement and origin as they are now, by value: select() rewrites the origin each frame.
+    const TerrainMapping m = mapping_;
+    const glm::dvec3 o = source_.origin;
+    if (!stream_) return [map = &map_, m, o](double x, double z) { return terrainHeightAt(*map, m, o, x, z); };
     auto sampler = std::make_shared<TileCacheSampler>(stream_->cache());
-    return [this, sampler](double x, double z) {
-        const glm::dvec3& o = source_.origin;
-        const double tx = (x - o.x + mapping_.sizeX() * 0.5) / mapping_.texelSizeX();
-        const double tz = (z - o.z + mapping_.sizeZ() * 0.5) / mapping_.texelSizeZ();
-        return o.y + mapping_.height_offset_m + mapping_.height_scale_m * sampler->sample(tx, tz);
+    return [sampler, m, o](double x, double z) {
+        const double tx = (x - o.x + m.sizeX() * 0.5) / m.texelSizeX();
+        const double tz = (z - o.z + m.sizeZ() * 0.5) / m.texelSizeZ();
+        return o.y + m.height_offset_m + m.height_scale_m * sampler->sample(tx, tz);
     };
 }
 
