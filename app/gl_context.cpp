@@ -111,7 +111,11 @@ public:
         if (context_) OSMesaDestroyContext(context_);
     }
     Backend backend() const override { return Backend::OSMesa; }
-    bool makeCurrent() override { return context_ && OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1); }
+    bool makeCurrent() override {
+        // Only when another context took its place: making it current again allocates anew.
+        if (context_ && OSMesaGetCurrentContext() == context_) return true;
+        return context_ && OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1);
+    }
 
     bool create(const ContextOptions& o, std::string& error) {
         const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
