@@ -192,23 +192,23 @@ bool FrameRenderer::placeLocalObjects(const Settings& s, glm::dvec3 camera) {
         if (objects_next_reach_m_ == reach && !localScatterStale(objects_next_centre_, xz, reach))
             return adopt(placements, objects_next_centre_);
     }
+    // Past the margin (or another reach): placed now, the frame waits. Half way to it: the next
+    // placement, around the camera here, on another thread.
     const double drift = localScatterDrift(objects_centre_, xz) / reach;
-    const bool budget = scatterBudgetProblem(s.objects, localScatterArea(xz, reach), "the camera-local").empty();
-    if (!budget) return false;  // keeps the last placement
-    if (objects_reach_m_ != reach || drift > kLocalScatterReach - 1.0) {
-        // The camera left the margin before a background placement came: placed now, the frame waits.
+    const bool now = objects_reach_m_ != reach || drift > kLocalScatterReach - 1.0;
+    const bool soon = !objects_next_.valid() && drift > 0.5 * (kLocalScatterReach - 1.0);
+    if (!now && !soon) return false;
+    const ScatterArea area = localScatterArea(xz, reach);
+    if (!scatterBudgetProblem(s.objects, area, "the camera-local").empty()) return false;  // keeps the last placement
+    if (now) {
         objects_next_ = {};
-        return adopt(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), localScatterArea(xz, reach)), xz);
+        return adopt(placeObjects(s.objects, terrainGround(*terrain_, s.terrain), area), xz);
     }
-    if (!objects_next_.valid() && drift > 0.5 * (kLocalScatterReach - 1.0)) {
-        // Half way to the margin: the next placement, around the camera here, on another thread.
-        objects_next_centre_ = xz;
-        objects_next_reach_m_ = reach;
-        objects_next_ = std::async(std::launch::async, [objects = s.objects, ground = terrainGround(*terrain_, s.terrain),
-                                                        area = localScatterArea(xz, reach)] {
-            return placeObjects(objects, ground, area);
-        });
-    }
+    objects_next_centre_ = xz;
+    objects_next_reach_m_ = reach;
+    objects_next_ = std::async(std::launch::async, [objects = s.objects, ground = terrainGround(*terrain_, s.terrain), area] {
+        return placeObjects(objects, ground, area);
+    });
     return false;
 }
 
