@@ -543,6 +543,8 @@ int runCommand(int argc, char** argv) {
     cache_cmd->add_option("--size-m", cache_opts.size_m, "a heightmap image's extent in m ([terrain] size_m)");
     cache_cmd->add_option("--height-scale-m", cache_opts.height_scale_m, "a heightmap image's height of value 1 in m");
     cache_cmd->add_option("--height-offset-m", cache_opts.height_offset_m, "a heightmap image's height of value 0 in m");
+    cache_cmd->add_option("--raw-width", cache_opts.raw_width, "a raw .r16's width in samples ([terrain] raw_width)")->check(kDecimal);
+    cache_cmd->add_option("--raw-height", cache_opts.raw_height, "a raw .r16's height in samples ([terrain] raw_height)")->check(kDecimal);
     cache_cmd->add_flag("--force", cache_opts.force, "rebuild even when the cache is up to date");
 
     try {

@@ -41,10 +41,13 @@ int runTerrainCache(const TerrainCacheOptions& o) {
 
     // A DEM when GDAL finds georeferencing, read a row at a time (loaded whole when it has nodata
     // cells to fill); a plain image goes through OpenImageIO instead: a one-channel image (a
-    // gen-heightmap TIFF, a 16-bit PNG) a band of rows at a time, anything else (EXR, RGB) whole.
+    // gen-heightmap TIFF, a 16-bit PNG) a band of rows at a time, a raw .r16 a row at a time,
+    // anything else (EXR, RGB) whole.
     InputErrors errors;
     bool fill_whole = false;
-    std::unique_ptr<DemRows> dem_rows = DemRows::open(o.input, DemNodata::Fill, 1.0, errors, fill_whole);
+    // A raw .r16 is no DEM (GDAL does not know it).
+    const bool raw = o.input.extension() == ".r16" || o.input.extension() == ".R16";
+    std::unique_ptr<DemRows> dem_rows = raw ? nullptr : DemRows::open(o.input, DemNodata::Fill, 1.0, errors, fill_whole);
     std::unique_ptr<HeightmapRows> image_rows;
     TileCacheRows read;  // set when the input is read a row at a time
     Heightmap map;       // the input held whole otherwise (or only its size)
@@ -60,16 +63,16 @@ int runTerrainCache(const TerrainCacheOptions& o) {
             mapping = demMapping(dem.info, dem.map.width, dem.map.height);
             map = std::move(dem.map);
         }
-    } else if (errors.size() == 1 && errors[0].message.find("no geotransform") != std::string::npos) {
+    } else if (raw || (errors.size() == 1 && errors[0].message.find("no geotransform") != std::string::npos)) {
         errors.clear();
         std::string not_rows;
-        image_rows = HeightmapRows::open(o.input, not_rows);
+        image_rows = HeightmapRows::open(o.input, not_rows, o.raw_width, o.raw_height);
         if (image_rows) {
             map.width = image_rows->width();
             map.height = image_rows->height();
             read = [&](int z, float* row) { return image_rows->read(z, row); };
         } else {
-            map = loadHeightmap(o.input, 0, 0, errors);
+            map = loadHeightmap(o.input, o.raw_width, o.raw_height, errors);
         }
         mapping = TerrainMapping{o.size_m, o.height_scale_m, o.height_offset_m, map.width, map.height};
     }

@@ -14,6 +14,7 @@ struct TerrainCacheOptions {
     bool progress = true;
     // A heightmap image (no georeferencing) is mapped as [terrain] maps it:
     double size_m = 8192.0, height_scale_m = 600.0, height_offset_m = 0.0;
+    int raw_width = 0, raw_height = 0;  // a raw .r16's size in samples ([terrain] raw_width, raw_height)
 };
 
 // 0: the cache is up to date or was built; 2: bad input (the file, the tile size); 1: the

@@ -1,4 +1,5 @@
-// A single-channel heightmap image read a band of rows at a time (OpenImageIO scanlines), so a
+// A single-channel heightmap image read a band of rows at a time (OpenImageIO scanlines; a raw
+// .r16 a row at a time), so a
 // map larger than memory (a `gen-heightmap --size 65537` TIFF) becomes a tile cache without
 // ever being held whole (`vista terrain-cache`, terrain/tile_cache.h).
 #pragma once
@@ -13,8 +14,10 @@ namespace vista {
 class HeightmapRows {
 public:
     // Opens file when it is an image of one channel, one subimage, not EXR (EXR headers are
-    // checked in memory by loadHeightmap); null with why otherwise (then loadHeightmap reads it).
-    static std::unique_ptr<HeightmapRows> open(const std::filesystem::path& file, std::string& why);
+    // checked in memory by loadHeightmap), or a raw .r16 of raw_width x raw_height samples (its
+    // size checked); null with why otherwise (then loadHeightmap reads it, or names the problem).
+    static std::unique_ptr<HeightmapRows> open(const std::filesystem::path& file, std::string& why, int raw_width = 0,
+                                               int raw_height = 0);
     ~HeightmapRows();
     HeightmapRows(const HeightmapRows&) = delete;
     HeightmapRows& operator=(const HeightmapRows&) = delete;

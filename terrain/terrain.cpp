@@ -179,9 +179,9 @@ bool checkMaterials(const TerrainSettings& s, int width, int height, InputErrors
 }
 
 // A streamed terrain's missing or stale tile cache, built as `vista terrain-cache` builds it (the
-// same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time and a
-// DEM a row at a time, never whole, with loadChecked's checks on the size and each row;
-// anything else (EXR, RGB, .r16, a DEM with nodata to fill) loaded whole through loadChecked,
+// same file): a one-channel heightmap image (TIFF, 16-bit PNG) a band of rows at a time, a raw
+// .r16 and a DEM a row at a time, never whole, with loadChecked's checks on the size and each
+// row; anything else (EXR, RGB, a DEM with nodata to fill) loaded whole through loadChecked,
 // then dropped. reason: why it is built. Check only (StreamCacheUse::Check): the input is read
 // through and checked the same way, and nothing is written.
 bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const std::filesystem::path& file,
@@ -198,7 +198,7 @@ bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const s
     std::unique_ptr<DemRows> dem_rows;
     bool fill_whole = false;
     if (s.dem.empty()) {
-        image_rows = HeightmapRows::open(s.heightmap, why);
+        image_rows = HeightmapRows::open(s.heightmap, why, s.raw_width, s.raw_height);
     } else {
         dem_rows = DemRows::open(s.dem, s.dem_nodata, s.dem_vertical_scale, errors, fill_whole);
         if (!dem_rows && !fill_whole) return false;

@@ -218,6 +218,27 @@ TEST_CASE("gl: the first streamed load of a TIFF builds its cache a band of rows
     CHECK(errors[0].message.find("at texel (9, 40) is outside the accepted") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(dir.path / "spike.tif.vtc"));
     CHECK(wholeHeightmapLoads() == whole);
+
+    // A raw .r16 a row at a time too, the command's file (given the same size).
+    const Heightmap small = generateIsland(IslandParams{65, 3});
+    std::string raw;
+    for (float v : small.samples) {
+        const unsigned q = unsigned(std::lround(v * 65535.0f));
+        raw += char(q & 0xff);
+        raw += char(q >> 8);
+    }
+    const std::filesystem::path r16 = dir.path / "island.r16";
+    std::ofstream(r16, std::ios::binary) << raw;
+    s.terrain.heightmap = r16.string();
+    s.terrain.raw_width = s.terrain.raw_height = 65;
+    REQUIRE(renderer().prepare(s).empty());
+    REQUIRE(renderer().terrain()->streamed());
+    CHECK(wholeHeightmapLoads() == whole);
+    o.input = r16;
+    o.out = dir.path / "r16-command.vtc";
+    o.raw_width = o.raw_height = 65;
+    REQUIRE(runTerrainCache(o) == 0);
+    CHECK(bytes(dir.path / "island.r16.vtc") == bytes(o.out));
 }
 
 TEST_CASE("gl: the first streamed load of a DEM builds its cache a row at a time, as vista terrain-cache does") {

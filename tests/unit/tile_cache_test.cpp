@@ -190,6 +190,38 @@ TEST_CASE("tile cache: built from an image read a band of rows at a time, the sa
                                TileCacheKey{123, 456, 789}, 32, dir / "rows.vtc", true) == "");
         CHECK(fileBytes(dir / "memory.vtc") == fileBytes(dir / "rows.vtc"));
     }
+    // A raw .r16 (little-endian uint16) a row at a time: loadHeightmap's samples, the same cache.
+    {
+        InputErrors errors;
+        const Heightmap png = loadHeightmap(dir / "map.png", 0, 0, errors);
+        std::vector<unsigned char> raw;
+        for (float v : png.samples) {
+            const unsigned q = unsigned(std::lround(v * 65535.0f));
+            raw.push_back((unsigned char)(q & 0xff));
+            raw.push_back((unsigned char)(q >> 8));
+        }
+        std::ofstream(dir / "map.r16", std::ios::binary).write(reinterpret_cast<const char*>(raw.data()), std::streamsize(raw.size()));
+        const Heightmap whole = loadHeightmap(dir / "map.r16", 150, 150, errors);
+        REQUIRE(errors.empty());
+        std::string why;
+        auto rows = HeightmapRows::open(dir / "map.r16", why, 150, 150);
+        REQUIRE_MESSAGE(rows, why);
+        std::vector<float> row(150);
+        int differing = 0;
+        for (int z = 0; z < 150; ++z) {
+            REQUIRE(rows->read(z, row.data()) == "");
+            for (int x = 0; x < 150; ++x) differing += row[std::size_t(x)] != whole.at(x, z);
+        }
+        CHECK(differing == 0);
+        REQUIRE(build(whole, dir / "raw-memory.vtc", 32, true) == "");
+        auto again = HeightmapRows::open(dir / "map.r16", why, 150, 150);
+        REQUIRE(buildTileCache(150, 150, [&](int z, float* r) { return again->read(z, r); }, mappingOf(whole),
+                               TileCacheKey{123, 456, 789}, 32, dir / "raw-rows.vtc", true) == "");
+        CHECK(fileBytes(dir / "raw-memory.vtc") == fileBytes(dir / "raw-rows.vtc"));
+        // A wrong size is left to loadHeightmap, which names it.
+        CHECK_FALSE(HeightmapRows::open(dir / "map.r16", why, 150, 149));
+        CHECK_FALSE(HeightmapRows::open(dir / "map.r16", why));
+    }
     // What the rows cannot read is left to loadHeightmap: EXR (headers checked in memory), RGB.
     std::string why;
     CHECK_FALSE(HeightmapRows::open(dir / "map.exr", why));
