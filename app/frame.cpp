@@ -148,10 +148,7 @@ void FrameRenderer::prepareObjects(const Settings& s, InputErrors& errors) {
         objects_next_ = {};  // placing other lists
         objects_.use();
         objects_placed_for_ = s.objects;
-        const TerrainMapping& m = terrain_->mapping();
-        const double half = m.size_m * 0.5;
-        const glm::dvec3 origin = s.terrain.origin;
-        ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+        ScatterArea area = terrainScatterArea(s.terrain.origin, terrain_->mapping().size_m);
         // Rules too dense for the whole terrain are placed around the camera: its start pose here,
         // then wherever a frame takes it (placeLocalObjects).
         objects_local_ = !scatterBudgetProblem(s.objects, area).empty();

@@ -28,10 +28,8 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
             if (terrain && cache) {
                 auto sampler = std::make_shared<TileCacheSampler>(*cache);
                 terrain->ground = [cache, sampler, origin](double x, double z) {
-                    const TerrainMapping& m = cache->mapping();
-                    const double tx = (x - origin.x + m.sizeX() * 0.5) / m.texelSizeX();
-                    const double tz = (z - origin.z + m.sizeZ() * 0.5) / m.texelSizeZ();
-                    return origin.y + m.height_offset_m + m.height_scale_m * sampler->sample(tx, tz);
+                    return placedHeightAt(cache->mapping(), origin, x, z,
+                                          [&](double tx, double tz) { return sampler->sample(tx, tz); });
                 };
             }
         } else {
@@ -49,8 +47,7 @@ InputErrors validateSceneInputs(const Settings& s, CheckedTerrain* terrain) {
         // As FrameRenderer::prepareObjects: over the terrain's extent, or around the camera when
         // the rules are too dense for it.
         if (extent && objectsWanted(s.objects)) {
-            const double half = extent->size_m * 0.5;
-            const ScatterArea area{{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+            const ScatterArea area = terrainScatterArea(origin, extent->size_m);
             const ScatterArea local = localScatterArea({s.camera.position.x, s.camera.position.z}, s.objects.max_distance_m);
             if (!scatterBudgetProblem(s.objects, area).empty())
                 if (std::string why = scatterBudgetProblem(s.objects, local, "the camera-local"); !why.empty())

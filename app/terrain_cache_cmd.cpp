@@ -5,6 +5,7 @@
 
 #include "app/progress.h"
 #include "terrain/dem.h"
+#include "terrain/heightmap.h"
 #include "terrain/heightmap_rows.h"
 #include "terrain/tile_cache.h"
 
@@ -46,7 +47,7 @@ int runTerrainCache(const TerrainCacheOptions& o) {
     InputErrors errors;
     bool fill_whole = false;
     // A raw .r16 is no DEM (GDAL does not know it).
-    const bool raw = o.input.extension() == ".r16" || o.input.extension() == ".R16";
+    const bool raw = isRawHeightmap(o.input);
     std::unique_ptr<DemRows> dem_rows = raw ? nullptr : DemRows::open(o.input, DemNodata::Fill, 1.0, errors, fill_whole);
     std::unique_ptr<HeightmapRows> image_rows;
     TileCacheRows read;  // set when the input is read a row at a time

@@ -204,9 +204,9 @@ Heightmap finish(Heightmap map, std::string why, const std::string& name, InputE
 // loadHeightmap's calls (wholeHeightmapLoads).
 std::atomic<std::int64_t> whole_loads{0};
 
-bool isRaw(const std::string& name) { return lowercase(std::filesystem::path(name).extension().string()) == ".r16"; }
-
 }  // namespace
+
+bool isRawHeightmap(const std::filesystem::path& file) { return lowercase(file.extension().string()) == ".r16"; }
 
 Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int raw_height, InputErrors& errors,
                         std::uint64_t max_bytes) {
@@ -217,7 +217,7 @@ Heightmap loadHeightmap(const std::filesystem::path& file, int raw_width, int ra
         errors.push_back({file.string(), 0, why});
         return map;
     }
-    std::string why = isRaw(file.string()) ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
+    std::string why = isRawHeightmap(file) ? loadRaw16(file, raw_width, raw_height, max_bytes, map)
                                            : loadImage(file, max_bytes, map);
     return finish(std::move(map), std::move(why), file.string(), errors);
 }
@@ -226,7 +226,7 @@ Heightmap decodeHeightmap(std::span<const unsigned char> bytes, const std::strin
                           InputErrors& errors, std::uint64_t max_bytes) {
     Heightmap map;
     std::string why;
-    if (isRaw(name)) {
+    if (isRawHeightmap(name)) {
         why = checkRawSize(raw_width, raw_height, bytes.size(), max_bytes);
         if (why.empty()) decodeRaw16(bytes, raw_width, raw_height, map);
     } else {

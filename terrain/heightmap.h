@@ -46,6 +46,9 @@ bool checkHeightRange(const Heightmap& map, double scale_m, double offset_m, con
 // is wrong (the first such texel, how many in that row).
 std::string heightRowProblem(const float* row, int width, int z, double scale_m, double offset_m);
 
+// Whether file is a raw .r16 (little-endian uint16 samples; its size comes from raw_width/raw_height).
+bool isRawHeightmap(const std::filesystem::path& file);
+
 // Tests: how many times loadHeightmap has run in this process (each holds a whole map), so a
 // test can show that a path reads a map a band of rows at a time instead.
 std::int64_t wholeHeightmapLoads();

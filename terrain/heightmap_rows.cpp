@@ -2,6 +2,8 @@
 // (one 2D grey image, finite samples), or a raw .r16's rows.
 #include "terrain/heightmap_rows.h"
 
+#include "terrain/heightmap.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -25,7 +27,7 @@ std::unique_ptr<HeightmapRows> HeightmapRows::open(const std::filesystem::path& 
         why = file.string() + ": read whole (" + ext + ")";
         return nullptr;
     }
-    if (ext == ".r16") {
+    if (isRawHeightmap(file)) {
         // The size as loadHeightmap checks it (which names a mismatch when this declines).
         std::error_code ec;
         const std::uintmax_t size = std::filesystem::file_size(file, ec);

@@ -191,7 +191,7 @@ bool buildStreamCache(const TerrainSettings& s, const TileCacheKey& key, const s
     auto announce = [&] {
         if (write)
             std::fprintf(stderr, "building the tile cache %s (tile %d) for %s: %s\n", file.string().c_str(), s.grid,
-                     input.c_str(), reason.c_str());
+                         input.c_str(), reason.c_str());
     };
     std::string why;
     std::unique_ptr<HeightmapRows> image_rows;
@@ -500,17 +500,12 @@ bool Terrain::matches(const TerrainSettings& s) const {
 }
 
 double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z) {
-    double tx = (x - origin.x + mapping.sizeX() * 0.5) / mapping.texelSizeX();
-    double tz = (z - origin.z + mapping.sizeZ() * 0.5) / mapping.texelSizeZ();
-    return origin.y + mapping.height_offset_m + mapping.height_scale_m * map.sample(tx, tz);
+    return placedHeightAt(mapping, origin, x, z, [&](double tx, double tz) { return map.sample(tx, tz); });
 }
 
 double Terrain::heightAt(double x, double z) const {
     if (!stream_) return terrainHeightAt(map_, mapping_, source_.origin, x, z);
-    const glm::dvec3& o = source_.origin;
-    const double tx = (x - o.x + mapping_.sizeX() * 0.5) / mapping_.texelSizeX();
-    const double tz = (z - o.z + mapping_.sizeZ() * 0.5) / mapping_.texelSizeZ();
-    return o.y + mapping_.height_offset_m + mapping_.height_scale_m * stream_->sample(tx, tz);
+    return placedHeightAt(mapping_, source_.origin, x, z, [&](double tx, double tz) { return stream_->sample(tx, tz); });
 }
 
 std::function<double(double, double)> Terrain::heightSampler() const {
@@ -520,9 +515,7 @@ std::function<double(double, double)> Terrain::heightSampler() const {
     if (!stream_) return [map = &map_, m, o](double x, double z) { return terrainHeightAt(*map, m, o, x, z); };
     auto sampler = std::make_shared<TileCacheSampler>(stream_->cache());
     return [sampler, m, o](double x, double z) {
-        const double tx = (x - o.x + m.sizeX() * 0.5) / m.texelSizeX();
-        const double tz = (z - o.z + m.sizeZ() * 0.5) / m.texelSizeZ();
-        return o.y + m.height_offset_m + m.height_scale_m * sampler->sample(tx, tz);
+        return placedHeightAt(m, o, x, z, [&](double tx, double tz) { return sampler->sample(tx, tz); });
     };
 }
 

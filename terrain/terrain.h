@@ -52,6 +52,14 @@ struct TerrainTiles {
 // x/z, bilinear, clamped to the map's edge outside it: Terrain::heightAt(), and `vista check`
 // without GL.
 double terrainHeightAt(const Heightmap& map, const TerrainMapping& mapping, const glm::dvec3& origin, double x, double z);
+// The same from sample(tx, tz): the map's units at continuous level-0 texel coordinates (a
+// Heightmap's, a tile cache's through TileCacheSampler).
+template <class Sample>
+double placedHeightAt(const TerrainMapping& m, const glm::dvec3& origin, double x, double z, Sample&& sample) {
+    const double tx = (x - origin.x + m.sizeX() * 0.5) / m.texelSizeX();
+    const double tz = (z - origin.z + m.sizeZ() * 0.5) / m.texelSizeZ();
+    return origin.y + m.height_offset_m + m.height_scale_m * double(sample(tx, tz));
+}
 
 // The tile cache a streamed terrain reads ([terrain.stream] cache, or next to the input),
 // checked against its input and the settings. A missing or stale one is built (Build: as

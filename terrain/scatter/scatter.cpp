@@ -66,6 +66,11 @@ std::vector<PlacedObject> scatterRegion(const ScatterRule& r, glm::ivec2 min_cel
     return out;
 }
 
+ScatterArea terrainScatterArea(const glm::dvec3& origin, double size_m) {
+    const double half = size_m * 0.5;
+    return {{origin.x - half, origin.z - half}, {origin.x + half, origin.z + half}};
+}
+
 ScatterArea localScatterArea(glm::dvec2 centre, double max_distance_m) {
     const double half = kLocalScatterReach * max_distance_m;
     return {centre - half, centre + half};

@@ -12,6 +12,7 @@
 #include "terrain/scatter/object_settings.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -32,6 +33,8 @@ using GroundFunction = std::function<GroundSample(double x, double z)>;
 struct ScatterArea {
     glm::dvec2 min{0.0}, max{0.0};
 };
+// The extent of a terrain of side size_m centred at origin ([terrain] origin).
+ScatterArea terrainScatterArea(const glm::dvec3& origin, double size_m);
 
 // The world cell holding point xz for rule r.
 glm::ivec2 scatterCellOf(const ScatterRule& r, glm::dvec2 xz);
