@@ -114,6 +114,9 @@ vec3 traceReflection(vec3 origin, vec3 dir, out float weight) {
     vec4 clip0 = u_view_proj * vec4(origin, 1.0), clip_dir = u_view_proj * vec4(dir, 0.0);
     float ratio = pow(t_max / t0, 1.0 / float(steps));
     float t_prev = 0.0, t = t0;
+    bool crossed = false;
+    // The march only finds the step that crosses the depth; the bisection runs once after it
+    // (inside the loop a shader core would run it, masked, on every step).
     for (int i = 0; i < steps; ++i) {
         vec4 clip = clipAt(clip0, clip_dir, t);
         if (clip.w <= u_near.x) break;
@@ -122,23 +125,25 @@ vec3 traceReflection(vec3 origin, vec3 dir, out float weight) {
         float d = texelFetch(u_scene_depth, texelOf(uv), 0).r;
         float behind = d > 0.0 ? clip.w - linearDepth(d) : -1.0;
         if (behind > 0.0 && behind < 2.0 * (t - t_prev) + 1.0) {
-            float lo = t_prev, hi = t;
-            for (int j = 0; j < 5; ++j) {
-                float m = 0.5 * (lo + hi);
-                vec4 c = clipAt(clip0, clip_dir, m);
-                float d2 = texelFetch(u_scene_depth, texelOf(c.xy / max(c.w, 1e-6) * 0.5 + 0.5), 0).r;
-                if (d2 > 0.0 && c.w > linearDepth(d2)) hi = m; else lo = m;
-            }
-            vec4 c = clipAt(clip0, clip_dir, hi);
-            vec2 hit = clamp(c.xy / max(c.w, 1e-6) * 0.5 + 0.5, vec2(0.0), vec2(1.0));
-            vec2 edge = min(hit, 1.0 - hit);
-            weight = smoothstep(0.0, 0.06, min(edge.x, edge.y)) * (1.0 - smoothstep(0.8, 1.0, hi / t_max));
-            return texelFetch(u_scene_color, texelOf(hit), 0).rgb;
+            crossed = true;
+            break;
         }
         t_prev = t;
         t *= ratio;
     }
-    return vec3(0.0);
+    if (!crossed) return vec3(0.0);
+    float lo = t_prev, hi = t;
+    for (int j = 0; j < 5; ++j) {
+        float m = 0.5 * (lo + hi);
+        vec4 c = clipAt(clip0, clip_dir, m);
+        float d2 = texelFetch(u_scene_depth, texelOf(c.xy / max(c.w, 1e-6) * 0.5 + 0.5), 0).r;
+        if (d2 > 0.0 && c.w > linearDepth(d2)) hi = m; else lo = m;
+    }
+    vec4 c = clipAt(clip0, clip_dir, hi);
+    vec2 hit = clamp(c.xy / max(c.w, 1e-6) * 0.5 + 0.5, vec2(0.0), vec2(1.0));
+    vec2 edge = min(hit, 1.0 - hit);
+    weight = smoothstep(0.0, 0.06, min(edge.x, edge.y)) * (1.0 - smoothstep(0.8, 1.0, hi / t_max));
+    return texelFetch(u_scene_color, texelOf(hit), 0).rgb;
 }
 
 // The shading normal: the waves' (ws), with rain rings near the eye only (their 6 cm wavelength
