@@ -409,6 +409,7 @@ SunShadowInput FrameRenderer::addTerrainAndShadowPasses(FrameGraph& graph, const
     report.counters["shadows.drawn"] = double(st.drawn);
     report.counters["shadows.caster_instances"] = double(st.caster_instances);
     report.counters["shadows.casters_skipped"] = double(st.casters_skipped);
+    report.counters["shadows.caster_triangles"] = double(st.caster_triangles);
     report.counters["shadows.cascades_cached"] = double(st.cached);
     return shadows;
 }

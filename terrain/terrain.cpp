@@ -61,18 +61,16 @@ gl::Texture materialArray(const std::vector<std::uint8_t>& pixels, int size, int
     return gl::Texture::adopt(id, size, size, format);
 }
 
-// Indices of a (q+1)^2-vertex grid of q x q quads; the vertex shader derives positions
-// from gl_VertexID, so there is no vertex buffer.
-std::vector<std::uint32_t> gridIndices(int q) {
-    std::vector<std::uint32_t> indices;
-    indices.reserve(std::size_t(q) * std::size_t(q) * 6);
+// Appends the indices of a (q+1)^2-vertex grid of q x q quads, taking every stride-th vertex
+// (q a multiple of stride); the vertex shader derives positions from gl_VertexID, so there is no
+// vertex buffer.
+void appendGridIndices(int q, int stride, std::vector<std::uint32_t>& indices) {
     auto at = [q](int x, int z) { return std::uint32_t(z * (q + 1) + x); };
-    for (int z = 0; z < q; ++z)
-        for (int x = 0; x < q; ++x) {
-            std::uint32_t a = at(x, z), b = at(x + 1, z), c = at(x, z + 1), d = at(x + 1, z + 1);
+    for (int z = 0; z < q; z += stride)
+        for (int x = 0; x < q; x += stride) {
+            std::uint32_t a = at(x, z), b = at(x + stride, z), c = at(x, z + stride), d = at(x + stride, z + stride);
             indices.insert(indices.end(), {a, c, b, b, c, d});
         }
-    return indices;
 }
 
 }  // namespace
@@ -390,8 +388,15 @@ bool Terrain::finishCreate(Terrain& terrain, const TerrainSettings& s, ShaderLib
     t->bias_texture_ = gl::Texture::create2D(corners.x, corners.y, GL_R32F, 1, "terrain distance bias");
 
     t->shaders_ = &shaders;
-    std::vector<std::uint32_t> indices = gridIndices(s.grid / 2);
-    t->index_count_ = GLsizei(indices.size());
+    // The full grid, then the grid with every 2nd, 4th, ... vertex (coarser shadow casters).
+    std::vector<std::uint32_t> indices;
+    const int quads = s.grid / 2;
+    for (int stride = 1; stride <= quads && quads % stride == 0; stride *= 2) {
+        const std::size_t offset = indices.size();
+        appendGridIndices(quads, stride, indices);
+        t->decimated_.emplace_back(GLsizei(offset), GLsizei(indices.size() - offset));
+    }
+    t->index_count_ = t->decimated_[0].second;
     t->grid_indices_ = gl::Buffer::create(GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), 0, "terrain grid");
     t->vao_ = gl::createVertexArray("terrain grid");
     glVertexArrayElementBuffer(t->vao_.id(), t->grid_indices_.id());
@@ -670,7 +675,7 @@ void Terrain::sortInstances(const TerrainSettings& s, const std::vector<float>& 
 std::size_t Terrain::shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
                                      bool tessellate,
                                      const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep,
-                                     std::size_t* skipped) {
+                                     std::size_t* skipped, double coarsest_step_m) {
     out.clear();
     cullSelection(selection_, planes, culled_);
     appendInstances(culled_.nodes, out);
@@ -681,6 +686,27 @@ std::size_t Terrain::shadowInstances(const TerrainSettings& s, const Frustum& pl
         appendInstances(culled_.nodes, out);
         if (skipped) *skipped = inside - out.size();
     }
+    const std::size_t tess = shadowPatchesFirst(s, out, tessellate);
+    if (coarsest_step_m > 0.0 && tess < out.size()) decimateCasters(out, tess, coarsest_step_m);
+    return tess;
+}
+
+void Terrain::decimateCasters(std::vector<TerrainInstance>& out, std::size_t first, double coarsest_step_m) {
+    caster_steps_.clear();
+    for (std::size_t i = first; i < out.size(); ++i) caster_steps_.push_back(out[i].a.z);
+    const std::vector<int> k = casterDecimation(caster_steps_, source_.grid / 2, coarsest_step_m);
+    // Grouped by k (a draw each), finest first; the order within a group is kept.
+    shadow_scratch_.assign(out.begin() + std::ptrdiff_t(first), out.end());
+    std::size_t at = first;
+    for (int level = 0; level < int(decimated_.size()); ++level)
+        for (std::size_t i = 0; i < k.size(); ++i)
+            if (k[i] == level) {
+                out[at] = shadow_scratch_[i];
+                out[at++].b.w = float(level);
+            }
+}
+
+std::size_t Terrain::shadowPatchesFirst(const TerrainSettings& s, std::vector<TerrainInstance>& out, bool tessellate) {
     if (!s.tessellation.enabled || !tessellate || !shaders_) return 0;
     // The quadrants within the range in x, z (a superset of the view's, which measures in 3D: an
     // extra one is beyond the displacement's reach and draws as it would untessellated) go first.
@@ -861,9 +887,42 @@ void Terrain::drawShadow(const RenderContext& rc, const TerrainSettings& s, GLui
     TerrainBlock block{};
     block.u_shadow_matrix = matrix;
     setVertexState(s, block);
-    block.u_first_instance = GLint(tess);
-    bindPassBlock(rc, program, block);
-    glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size() - tess));
+    drawCasterRuns(rc, program, block, instances, tess);
+}
+
+void Terrain::drawCasterRuns(const RenderContext& rc, GLuint program, TerrainBlock& block,
+                             const std::vector<TerrainInstance>& list, std::size_t first) {
+    for (std::size_t end = first; first < list.size(); first = end) {
+        const float k = list[first].b.w;
+        while (end < list.size() && list[end].b.w == k) ++end;
+        const auto& [offset, count] = decimated_[std::min(std::size_t(k), decimated_.size() - 1)];
+        block.u_first_instance = GLint(first);
+        bindPassBlock(rc, program, block);
+        glDrawElementsInstanced(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(std::uintptr_t(offset) * sizeof(std::uint32_t)),
+                                GLsizei(end - first));
+    }
+}
+
+std::int64_t Terrain::triangles(const std::vector<TerrainInstance>& instances) const {
+    std::int64_t n = 0;
+    for (const TerrainInstance& i : instances)
+        n += decimated_[std::min(std::size_t(i.b.w), decimated_.size() - 1)].second / 3;
+    return n;
+}
+
+std::vector<int> casterDecimation(std::span<const float> steps, int quads, double coarsest_step_m) {
+    std::vector<int> k(steps.size(), 0);
+    if (steps.empty() || coarsest_step_m <= 0.0) return k;
+    int max_k = 0;  // 2^k must divide the quads per side
+    while ((quads >> max_k) % 2 == 0 && (quads >> max_k) > 1) ++max_k;
+    const double finest = *std::min_element(steps.begin(), steps.end());
+    int j = 0;
+    while (j < max_k && finest * double(2 << j) <= coarsest_step_m) ++j;
+    const double common = finest * double(1 << j);
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        if (double(steps[i]) < common) k[i] = std::clamp(int(std::lround(std::log2(common / double(steps[i])))), 0, j);
+    return k;
 }
 
 void Terrain::drawShadowLists(const RenderContext& rc, const TerrainSettings& s, GLuint program,
@@ -896,9 +955,7 @@ void Terrain::drawShadowLists(const RenderContext& rc, const TerrainSettings& s,
         TerrainBlock block{};
         block.u_shadow_matrix = matrix;
         setVertexState(s, block);
-        block.u_first_instance = GLint(patches);
-        bindPassBlock(rc, program, block);
-        glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(lists[i].size() - patches));
+        drawCasterRuns(rc, program, block, lists[i], patches);
     }
 }
 

@@ -143,18 +143,22 @@ public:
     // within range_m of the camera in x, z come first and their count is returned: drawShadow()
     // draws them displaced as the view draws them (factors and relief for the main camera), so
     // casters sink with the surface they shadow. Their grid triangles add to
-    // counters().tess_shadow_patches (reset by select()).
+    // counters().tess_shadow_patches (reset by select()). With coarsest_step_m > 0 the others are
+    // grouped by casterDecimation() (their b.w = k), finest grid first.
     std::size_t shadowInstances(const TerrainSettings& s, const Frustum& planes, std::vector<TerrainInstance>& out,
                                 bool tessellate,
                                 const std::function<bool(const glm::dvec3& lo, const glm::dvec3& hi)>& keep = {},
-                                std::size_t* skipped = nullptr);
+                                std::size_t* skipped = nullptr, double coarsest_step_m = 0.0);
     // Draws instances depth-only with program (terrain.glsl with SHADOW_PASS) through matrix
     // (camera-relative world -> the shadow view's clip) into slot 0..kShadowSlots-1 of the shadow
     // instance buffer (made on first use); the first `tess` of them (shadowInstances()) as patches
-    // with terrain_tess.glsl's shadow program.
+    // with terrain_tess.glsl's shadow program; the others with every 2^k-th grid vertex (k their
+    // b.w, set by shadowInstances()).
     static constexpr int kShadowSlots = TerrainCaster::kSlots;
     void drawShadow(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
                     const std::vector<TerrainInstance>& instances, std::size_t tess, int slot);
+    // The triangles instances draw (patches counted as their grid triangles).
+    std::int64_t triangles(const std::vector<TerrainInstance>& instances) const;
     // Draws several instance lists depth-only (spot shadow tiles, point cube faces): all are
     // uploaded at once, then list i is drawn through the matrix before(i) returns (after it has set
     // its viewport); its first tess[i] instances as patches. Empty lists are skipped.
@@ -260,7 +264,18 @@ private:
     gl::Buffer grid_indices_, instance_buffer_, bounds_buffer_, shadow_instances_, shadow_lists_;
     GLsizeiptr shadow_slot_bytes_ = 0;
     gl::VertexArray vao_;
-    GLsizei index_count_ = 0;
+    GLsizei index_count_ = 0;  // the full grid's; the buffer holds the decimated grids after it
+    // The grid with every 2^k-th vertex (k = 0: the full grid): offset and count in grid_indices_.
+    std::vector<std::pair<GLsizei, GLsizei>> decimated_;
+    std::vector<TerrainInstance> shadow_scratch_;
+    // Draws instances [first, end) of the bound range, a draw per run of equal decimation (b.w).
+    void drawCasterRuns(const RenderContext& rc, GLuint program, TerrainBlock& block, const std::vector<TerrainInstance>& list,
+                        std::size_t first);
+    // shadowInstances()'s steps: the displaced quadrants first (their count), then out[first..]
+    // grouped by casterDecimation().
+    std::size_t shadowPatchesFirst(const TerrainSettings& s, std::vector<TerrainInstance>& out, bool tessellate);
+    void decimateCasters(std::vector<TerrainInstance>& out, std::size_t first, double coarsest_step_m);
+    std::vector<float> caster_steps_;
     std::size_t max_instances_ = 0;
 };
 
@@ -279,6 +294,15 @@ std::vector<std::string> splatDefines(const TerrainSettings& s);
 std::vector<std::string> terrainTessDefines(const TerrainSettings& s);
 // Material tier of a quadrant whose box is distance_m from the camera at its nearest.
 int materialTier(const TerrainSettings& s, double distance_m);
+
+// Shadow casters drawn coarser than the view draws them, for a shadow map whose texels need no
+// finer grid: for quadrants of q x q quads with grid steps `steps` (m; the selection's, each the
+// finest times a power of two), the k (0 .. the largest with 2^k dividing q) with which each is
+// drawn with every 2^k-th vertex. Every quadrant finer than a common step S goes to S: S is the
+// finest step times the largest power of two that reaches at most coarsest_step_m and that every
+// quadrant can reach. The vertices kept lie on the surface (even ones do not morph), and
+// neighbours at S share theirs, so the coarser casters have no cracks. coarsest_step_m <= 0: all 0.
+std::vector<int> casterDecimation(std::span<const float> steps, int quads, double coarsest_step_m);
 
 ProgramList terrainPrograms();
 

@@ -18,14 +18,16 @@ public:
     glm::dvec2 heightRange() const override;
     double tessReach() const override { return terrain_->tessReach(*settings_); }
     std::size_t pick(const Frustum& planes, std::vector<TerrainInstance>& out, bool tessellate,
-                     const CasterBoxFilter& keep = {}, std::size_t* skipped = nullptr) override {
-        return terrain_->shadowInstances(*settings_, planes, out, tessellate, keep, skipped);
+                     const CasterBoxFilter& keep = {}, std::size_t* skipped = nullptr,
+                     double coarsest_step_m = 0.0) override {
+        return terrain_->shadowInstances(*settings_, planes, out, tessellate, keep, skipped, coarsest_step_m);
     }
     GLuint program(const RenderContext& rc) const override;
     void draw(const RenderContext& rc, GLuint program, const glm::mat4& matrix, const std::vector<TerrainInstance>& list,
               std::size_t tess, int slot) override {
         terrain_->drawShadow(rc, *settings_, program, matrix, list, tess, slot);
     }
+    std::int64_t triangles(const std::vector<TerrainInstance>& list) const override { return terrain_->triangles(list); }
     void drawLists(const RenderContext& rc, GLuint program, std::span<const std::vector<TerrainInstance>> lists,
                    std::span<const std::size_t> tess, const std::function<glm::mat4(std::size_t)>& before) override {
         terrain_->drawShadowLists(rc, *settings_, program, lists, tess, before);

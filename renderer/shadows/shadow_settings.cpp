@@ -27,6 +27,10 @@ void describe(SettingsVisitor& v, ShadowSettings& s) {
     v.field({"min_sun_elevation_deg", "deg", "below this sun elevation there are no sun shadows (and no shadow passes)"}, s.min_sun_elevation_deg, -10.0f, 90.0f);
     v.field({"stabilize", "", "sphere-fitted cascades snapped to whole texels (off: tight boxes that shimmer)"}, s.stabilize);
     v.field({"freeze", "", "keep the cascades where they are while the camera moves"}, s.freeze);
+    v.field({"caster_step_texels", "texels",
+             "terrain quadrants whose grid is finer than this many texels of a sun cascade are drawn into it with every 2nd, "
+             "4th, ... vertex, down to one common step (the vertices kept lie on the surface, so no cracks; counter "
+             "shadows.caster_triangles; 0: full detail)"}, s.caster_step_texels, 0.0f, 16.0f);
     v.field({"caster_cull", "", "leave out terrain quadrants whose shadows cannot reach the view depths a cascade "
              "shades (off: every quadrant in the cascade's box, same image, slower)"}, s.caster_cull);
     v.field({"cache_cascades", "", "how many of the farthest cascades may keep their map from an earlier frame (1: the far "

@@ -31,6 +31,7 @@ struct ShadowSettings {
     float min_sun_elevation_deg = 0.0f;  //!< deg, below this the sun casts no shadows (no passes), -10..90
     bool stabilize = true;               //!< sphere fit snapped to whole texels; off: tight unsnapped boxes (they shimmer)
     bool freeze = false;                 //!< keep the cascades where they are (fly around to inspect them)
+    float caster_step_texels = 1.0f;     //!< terrain casters finer than this many cascade texels are drawn with every 2nd, 4th, ... grid vertex down to it (0: full detail), 0..16
     bool caster_cull = true;             //!< leave out terrain quadrants whose shadows cannot reach a cascade's receivers (off: every quadrant in its box, same image, slower)
     int cache_cascades = 1;              //!< how many of the farthest cascades may keep their map from an earlier frame (1: the far cascade when on), 0..5
     int cache_frames = 8;                //!< a kept cascade is redrawn when its snapped box moves (the view moved a texel or turned), the sun moves, or on every this many frames of a sequence (1: every frame), 1..1000

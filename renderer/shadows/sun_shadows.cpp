@@ -180,9 +180,13 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
             }
             // Tessellated casters where the cascade serves displaced ground.
             std::size_t skipped = 0;
+            // The map holds one depth per texel: a caster grid finer than caster_step_texels of them
+            // is drawn coarser.
             tess_[std::size_t(i)] = terrain->pick(casterPlanes(light_, c, camera_, reach), list,
-                                                  serves_from < terrain->tessReach(), keep, &skipped);
+                                                  serves_from < terrain->tessReach(), keep, &skipped,
+                                                  double(s.caster_step_texels) * c.texel_m);
             stats_.casters_skipped += std::int64_t(skipped);
+            stats_.caster_triangles += terrain->triangles(list);
         }
         stats_.caster_instances += std::int64_t(list.size());
         u.info[i] = glm::vec4(list.empty() ? 0.0f : 1.0f, radius, 0.0f, 0.0f);

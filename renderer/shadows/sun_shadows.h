@@ -27,6 +27,7 @@ struct SunShadowStats {
     int drawn = 0;                   // of those with casters (a pass each)
     std::int64_t caster_instances = 0;  // terrain quadrants drawn over all cascades
     std::int64_t casters_skipped = 0;   // quadrants in a cascade's box whose shadow cannot reach its receivers
+    std::int64_t caster_triangles = 0;  // terrain triangles drawn over all cascades (after caster_step_texels)
     int cached = 0;                  // cascades whose map was kept from an earlier frame (no pass this frame)
     std::size_t memory_bytes = 0;    // shadow map + uniforms
 };

@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
@@ -22,7 +23,7 @@ namespace vista {
 // One quadrant of a node at its LOD level: what the terrain's vertex stage draws per instance.
 struct TerrainInstance {
     glm::vec4 a;  // camera-relative x, z of the min corner (m), grid step in x (m), level
-    glm::vec4 b;  // morph constants of the level, grid step in z (m), unused
+    glm::vec4 b;  // morph constants of the level, grid step in z (m), k: drawn with every 2^k-th grid vertex
 };
 
 // Accepts a caster by its camera-relative box (lo, hi).
@@ -39,9 +40,12 @@ public:
     virtual double tessReach() const = 0;
     // The selection's quadrants inside planes (camera-relative) into out; with `keep`, only those
     // it accepts (`skipped` gets how many inside the planes it left out). With `tessellate` the
-    // quadrants the view draws displaced come first, and their count is returned.
+    // quadrants the view draws displaced come first, and their count is returned. With
+    // coarsest_step_m > 0 the others whose grid is finer may be drawn with every 2nd, 4th, ...
+    // vertex, up to that step (a shadow map's texel needs no finer caster).
     virtual std::size_t pick(const Frustum& planes, std::vector<TerrainInstance>& out, bool tessellate,
-                             const CasterBoxFilter& keep = {}, std::size_t* skipped = nullptr) = 0;
+                             const CasterBoxFilter& keep = {}, std::size_t* skipped = nullptr,
+                             double coarsest_step_m = 0.0) = 0;
     // The depth-only program the draws below take (made current by the caller).
     virtual GLuint program(const RenderContext& rc) const = 0;
     // Draws one list through matrix (camera-relative world -> the shadow view's clip) into
@@ -49,6 +53,8 @@ public:
     static constexpr int kSlots = 8;
     virtual void draw(const RenderContext& rc, GLuint program, const glm::mat4& matrix,
                       const std::vector<TerrainInstance>& list, std::size_t tess, int slot) = 0;
+    // The triangles a list draws (its patches counted as grid triangles).
+    virtual std::int64_t triangles(const std::vector<TerrainInstance>& list) const = 0;
     // Draws several lists (spot tiles, point cube faces): list i through the matrix before(i)
     // returns after setting its viewport; empty lists are skipped.
     virtual void drawLists(const RenderContext& rc, GLuint program, std::span<const std::vector<TerrainInstance>> lists,

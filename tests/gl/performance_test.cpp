@@ -289,6 +289,34 @@ TEST_CASE("gl: a slowly moving camera's far-cascade shadows do not flicker more 
     CHECK(apart < 0.005);
 }
 
+TEST_CASE("gl: sun cascades draw casters finer than their texels coarser, with the same shadows") {
+    Settings s = hills();
+    s.shadows.max_distance_m = 2000.0f;
+    s.sky.sun_elevation_deg = 12.0f;  // long shadows: much of the view lies in them
+    s.sky.sun_azimuth_deg = 135.0f;
+    s.debug.view = DebugView::Shadow;  // the sun's visibility per pixel
+    s.shadows.caster_step_texels = 0.0f;
+    const Frame full = render(s, kGrazing);
+    // The hills' finest grid (31 m) is coarser than two texels of every cascade (6 m and finer at
+    // 1024^2): the default draws every caster as the view does.
+    s.shadows.caster_step_texels = 1.0f;
+    const Frame same = render(s, kGrazing);
+    // 16 texels: the finest quadrants take every 2nd vertex (62 m) in the far cascade.
+    s.shadows.caster_step_texels = 16.0f;
+    const Frame coarse = render(s, kGrazing);
+    const auto& c = coarse.report.counters;
+    const double apart = visibilityChange(coarse.hdr, full.hdr);
+    MESSAGE("caster triangles: " << full.report.counters.at("shadows.caster_triangles") << " full, "
+            << c.at("shadows.caster_triangles") << " at 16 texels; pixels whose visibility changes by > 0.05: " << apart);
+    CHECK(same.report.counters.at("shadows.caster_triangles") == full.report.counters.at("shadows.caster_triangles"));
+    CHECK(relativeDifference(same, full) == 0.0);
+    CHECK(c.at("shadows.caster_instances") == full.report.counters.at("shadows.caster_instances"));
+    CHECK(c.at("shadows.caster_triangles") < 0.8 * full.report.counters.at("shadows.caster_triangles"));
+    // Coarser casters move a shadow's edge by under a texel: a few edge pixels change. A crack
+    // between quadrants would let light through in lines across the shadows.
+    CHECK(apart < 0.005);
+}
+
 TEST_CASE("gl: the sea draws only the grid segments that can be in view, with the image of the whole circle") {
     Settings s = hills();
     s.water.enabled = true;

@@ -4,6 +4,7 @@
 #include "renderer/camera.h"
 #include "terrain/cdlod.h"
 #include "terrain/lod_error.h"
+#include "terrain/terrain.h"  // casterDecimation
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>
@@ -596,4 +597,39 @@ TEST_CASE("cdlod: a selection reused for a shadow frustum keeps exactly the node
     const SelectedNode* data = shadow.nodes.data();
     cullSelection(main, f, shadow);
     CHECK(shadow.nodes.data() == data);
+}
+
+TEST_CASE("cdlod: shadow casters drawn coarser all reach one common step, which their neighbours share") {
+    // Quadrants of 16 x 16 quads at steps 2, 4, 8, 16 and 64 m.
+    const std::vector<float> steps{2.0f, 4.0f, 8.0f, 16.0f, 64.0f, 2.0f, 4.0f};
+    // Off, or a texel finer than twice the finest step: every quadrant at full detail.
+    CHECK(casterDecimation(steps, 16, 0.0) == std::vector<int>(steps.size(), 0));
+    CHECK(casterDecimation(steps, 16, 3.9) == std::vector<int>(steps.size(), 0));
+    // Up to 9 m: the common step is 8 m, so 2 m quadrants take every 4th vertex, 4 m every 2nd,
+    // and 8 m and coarser draw as they are.
+    CHECK(casterDecimation(steps, 16, 9.0) == std::vector<int>{2, 1, 0, 0, 0, 2, 1});
+    CHECK(casterDecimation(steps, 16, 8.0) == std::vector<int>{2, 1, 0, 0, 0, 2, 1});
+    // The common step cannot pass 16 quads of the finest (one quad per quadrant): 32 m here.
+    CHECK(casterDecimation(steps, 16, 1000.0) == std::vector<int>{4, 3, 2, 1, 0, 4, 3});
+    // Every 2^k must divide the quads per side: 12 quads allow k up to 2.
+    CHECK(casterDecimation(steps, 12, 1000.0) == std::vector<int>{2, 1, 0, 0, 0, 2, 1});
+    CHECK(casterDecimation(steps, 1, 1000.0) == std::vector<int>(steps.size(), 0));
+    // Whatever the bound, each decimated quadrant lands on the common step and no coarser one
+    // changes: neighbours at the common step share their edge vertices.
+    for (double bound : {2.0, 5.0, 17.0, 40.0, 100.0}) {
+        CAPTURE(bound);
+        const std::vector<int> k = casterDecimation(steps, 16, bound);
+        float common = 0.0f;
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            const float step = steps[i] * float(1 << k[i]);
+            if (k[i] > 0) {
+                if (common == 0.0f) common = step;
+                CHECK(step == common);
+                CHECK(step <= bound);
+            }
+        }
+        for (std::size_t i = 0; i < steps.size(); ++i)
+            if (common > 0.0f && steps[i] >= common) CHECK(k[i] == 0);
+    }
+    CHECK(casterDecimation({}, 16, 10.0).empty());
 }
