@@ -138,10 +138,43 @@ AtmosphereParams atmosphereParams(const SkySettings& s) {
 }
 
 ProgramList skyPrograms() {
-    return {{"sky/shaders/transmittance_lut.glsl", {}}, {"sky/shaders/multiscatter_lut.glsl", {}},
-            {"sky/shaders/sky_view_lut.glsl", {}},      {"sky/shaders/sky.glsl", {}},
-            {"sky/shaders/sky.glsl", {"SKY_NO_GROUND"}},
-            {"sky/shaders/aerial_volume.glsl", {}},     {"sky/shaders/aerial.glsl", {}}};
+    ProgramList list{{"sky/shaders/transmittance_lut.glsl", {}}, {"sky/shaders/multiscatter_lut.glsl", {}},
+                     {"sky/shaders/sky_view_lut.glsl", {}},      {"sky/shaders/aerial_volume.glsl", {}},
+                     {"sky/shaders/aerial.glsl", {}}};
+    // The sky pass: each combination of what a view shows, for each part of the screen.
+    for (int bits = 0; bits < 8; ++bits)
+        for (const auto& [ground, clip] : {std::pair{false, 0}, std::pair{true, 0}, std::pair{false, 1}, std::pair{true, -1}})
+            list.push_back({"sky/shaders/sky.glsl", skyDefines({(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0}, ground, clip)});
+    return list;
+}
+
+SkyShows skyShows(const ViewParams& view, const ViewMatrices& m, const SkySettings& sky, const glm::dvec3& sun,
+                  const glm::dvec3& moon, double altitude_m) {
+    const double aspect = double(std::max(view.width, 1)) / double(std::max(view.height, 1));
+    const double tan_half = std::tan(glm::radians(view.fov_deg) * 0.5);
+    const double reach = std::atan(tan_half * std::sqrt(1.0 + aspect * aspect)) + glm::radians(1.0);
+    auto inView = [&](const glm::dvec3& dir, double radius) {
+        return std::acos(std::clamp(glm::dot(dir, m.forward), -1.0, 1.0)) <= reach + radius;
+    };
+    const double sun_radius = glm::radians(double(sky.sun_angular_radius_deg));
+    const double moon_radius = glm::radians(kMoonAngularRadiusDeg);
+    SkyShows shows;
+    shows.sun_disk = inView(sun, sun_radius);
+    shows.moon = sky.moon && inView(moon, moon_radius);
+    const bool eclipse = sky.moon && std::acos(std::clamp(glm::dot(sun, moon), -1.0, 1.0)) <
+                                         sun_radius + moon_radius + glm::radians(1.0);
+    shows.stars = sky.stars && (sun.y < 0.0 || altitude_m > 20000.0 || eclipse);
+    return shows;
+}
+
+std::vector<std::string> skyDefines(const SkyShows& shows, bool ground, int clip) {
+    std::vector<std::string> d;
+    if (!ground) d.push_back("SKY_NO_GROUND");
+    if (clip != 0) d.push_back("SKY_CLIP=" + std::to_string(clip));
+    if (shows.sun_disk) d.push_back("SKY_SUN_DISK");
+    if (shows.moon) d.push_back("SKY_MOON");
+    if (shows.stars) d.push_back("SKY_STARS");
+    return d;
 }
 
 SkyAtmosphere::SkyAtmosphere()
@@ -313,6 +346,7 @@ void SkyAtmosphere::addLutPasses(FrameGraph& graph, const RenderContext& rc, con
     frame_sky_view_ = sky_view;
     frame_in_space_ = in_space;
     frame_planet_ground_ = sky.planet_ground;
+    frame_shows_ = skyShows(rc.view, rc.matrices, sky, sun, moonDirection(sky), altitude_m);
     frame_aerial_ = AerialVolume{};
     if (!frame_u_) frame_u_ = std::make_unique<Uniforms>();
     *frame_u_ = u;
@@ -345,13 +379,11 @@ void SkyAtmosphere::addSkyPass(FrameGraph& graph, const RenderContext& rc, Scene
             data.sky_view = b.read(sky_view);
             data.hdr = b.write(targets.hdr);
         },
-        [this, &rc, u, ground = frame_planet_ground_](const Data& data, PassContext& ctx) {
+        [this, &rc, u, ground = frame_planet_ground_, shows = frame_shows_](const Data& data, PassContext& ctx) {
             upload(u);
             const TextureDesc& desc = ctx.desc(data.hdr);
             GLuint depth = data.depth.valid() ? ctx.texture(data.depth) : 0;
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}, depth), desc.width, desc.height);
-            glUseProgram(rc.shaders.id(ground ? ProgramKey{"sky/shaders/sky.glsl", {}}
-                                              : ProgramKey{"sky/shaders/sky.glsl", {"SKY_NO_GROUND"}}));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.transmittance));
             glBindTextureUnit(binding::kTex1, ctx.texture(data.multiscatter));
             glBindTextureUnit(binding::kTex2, ctx.texture(data.sky_view));
@@ -360,7 +392,20 @@ void SkyAtmosphere::addSkyPass(FrameGraph& graph, const RenderContext& rc, Scene
                 glDepthFunc(GL_GEQUAL);  // the triangle is at depth 0: passes only where depth is 0
                 glDepthMask(GL_FALSE);
             }
-            drawFullscreen(rc);
+            if (ground) {
+                // The rays pointing up never meet the ground: that part takes the variant without
+                // it, the rays pointing down (drawn second, over the sliver both clips keep) the
+                // variant with it; the same sky where both run.
+                glEnable(GL_CLIP_DISTANCE0);
+                for (int clip : {1, -1}) {
+                    glUseProgram(rc.shaders.id("sky/shaders/sky.glsl", skyDefines(shows, clip < 0, clip)));
+                    drawFullscreen(rc);
+                }
+                glDisable(GL_CLIP_DISTANCE0);
+            } else {
+                glUseProgram(rc.shaders.id("sky/shaders/sky.glsl", skyDefines(shows, false, 0)));
+                drawFullscreen(rc);
+            }
             glDisable(GL_DEPTH_TEST);
             glDepthMask(GL_TRUE);
         });

@@ -41,6 +41,24 @@ AtmosphereParams atmosphereParams(const SkySettings& sky);
 // Every program the sky uses (for FrameRenderer::allPrograms()).
 ProgramList skyPrograms();
 
+// What of the sky pass's optional work a view can show (its program variants: a shader core runs
+// a branch's body for every pixel). Conservative: a disc counts when any part of it, grown by a
+// degree, may lie inside the cone around the view axis through the frustum's corners.
+struct SkyShows {
+    bool sun_disk = true;  // the sun's disk (SKY_SUN_DISK)
+    bool moon = true;      // the moon's disk (SKY_MOON; [sky] moon on)
+    bool stars = true;     // the star field (SKY_STARS; [sky] stars on and a sky dark enough somewhere)
+};
+// sun and moon are unit vectors; in_space: the camera above the atmosphere (a black sky shows stars
+// by day); altitude_m above sea level. The stars need a sky darker than a tenth of the brightest
+// star, which a sky lit by a sun at or above the horizon never is below 20 km, unless the moon
+// eclipses it.
+SkyShows skyShows(const ViewParams& view, const ViewMatrices& m, const SkySettings& sky, const glm::dvec3& sun,
+                  const glm::dvec3& moon, double altitude_m);
+// The sky pass's defines for a part of the screen (clip: 0 whole, 1 rays up, -1 rays down) and
+// whether it draws the ground.
+std::vector<std::string> skyDefines(const SkyShows& shows, bool ground, int clip);
+
 // What the sky LUTs were last built for, and how often (tests and the bench look).
 struct SkyLutStats {
     int transmittance_builds = 0, multiscatter_builds = 0, sky_view_builds = 0;
@@ -109,6 +127,7 @@ private:
     std::unique_ptr<Uniforms> frame_u_;  // this frame's block (addLutPasses to addScenePasses)
     bool frame_in_space_ = false;
     bool frame_planet_ground_ = true;  // this frame's [sky] planet_ground (the sky pass's variant)
+    SkyShows frame_shows_;             // this frame's sun disk, moon and stars in view (variants)
     AerialVolume frame_aerial_;  // this frame's volume (addAerialPasses)
     gl::Texture transmittance_, multiscatter_, sky_view_;
     std::vector<float> atmosphere_key_;  // settings the transmittance/multi-scattering LUTs were built for

@@ -3,10 +3,27 @@
 // the part of its ray inside the atmosphere. The sun disk (limb-darkened, normalised to the
 // solar irradiance) and a sunlit Lambertian ground where a ray meets the planet are added; a
 // small dither hides 8-bit banding after tone mapping. Output: HDR, linear.
+#include "../../renderer/shaders/common.glsl"
+#if defined(VERTEX_SHADER) && defined(SKY_CLIP)
+// The full-screen triangle clipped to the view rays pointing up (SKY_CLIP 1) or down (-1) from
+// the horizontal, each side with a sliver of the other: a ray pointing up never meets the planet,
+// so the upper part takes the variant without the ground (atmosphere.cpp draws the lower part
+// second, over the sliver). A ray's height is affine on the screen, so the clip is exact.
+out vec2 v_uv;
+out float gl_ClipDistance[1];
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    v_uv = p;
+    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+    vec4 q = u_inv_view_proj * vec4(p * 2.0 - 1.0, 0.5, 1.0);
+    vec3 ray = q.xyz / q.w;
+    gl_ClipDistance[0] = float(SKY_CLIP) * ray.y + 1e-3 * length(ray);
+}
+#else
 #include "../../renderer/shaders/fullscreen.glsl"
+#endif
 
 #ifdef FRAGMENT_SHADER
-#include "../../renderer/shaders/common.glsl"
 #define SKY_TEX_TRANSMITTANCE BINDING_TEX_0
 #define SKY_TEX_MULTISCATTER BINDING_TEX_1
 #define SKY_TRANSMITTANCE_LUT
@@ -107,7 +124,7 @@ vec3 starField(vec3 dir, float pixel_rad, float sky_luminance) {
 }
 
 void main() {
-    vec3 dir = viewRay(v_uv);
+    vec3 dir = viewRay(gl_FragCoord.xy * u_viewport.zw);  // the pixel's centre, however the triangle was clipped
     vec3 sun = a_sun.xyz;
     float R = bottomR(), Rt = topR();
     float r = a_radii.z;
@@ -159,16 +176,31 @@ void main() {
         float pixel_rad = 2.0 / (u_proj[1][1] * u_viewport.y);
         float sky_luminance = dot(radiance, vec3(0.2126, 0.7152, 0.0722));
         // The moon in front of the sun and the stars (an eclipse shows its dark side).
+        // Each only in the variant of a view that can show it (SKY_MOON, SKY_SUN_DISK, SKY_STARS;
+        // atmosphere.cpp skyShows()): a shader core runs a branch's body for every pixel.
         float moon_cover = 0.0;
+#ifdef SKY_MOON
         float moon = a_night.z > 0.5 ? moonRadiance(dir, sun, pixel_rad, moon_cover) : 0.0;
+#else
+        const float moon = 0.0;
+#endif
         // The sun disk: I(c) = 1 - u (1 - c), c = cos of the angle from the limb's normal.
         float alpha = a_misc.z, u = a_misc.w;
         float cos_alpha = cos(alpha);
+#ifdef SKY_SUN_DISK
+        bool sun_disk = nu > cos_alpha;
+#else
+        const bool sun_disk = false;
+#endif
+#ifdef SKY_STARS
         bool stars_visible = a_night.x > 10.0 * sky_luminance && moon_cover < 1.0;
-        if ((nu > cos_alpha || moon_cover > 0.0 || stars_visible) && r0 <= Rt) t_view = transmittanceToTop(r0, mu0);
+#else
+        const bool stars_visible = false;
+#endif
+        if ((sun_disk || moon_cover > 0.0 || stars_visible) && r0 <= Rt) t_view = transmittanceToTop(r0, mu0);
         // Sunlight through the air in front of the camera, in colour: the sun disk and the moon.
-        vec3 sunlight = (nu > cos_alpha || moon > 0.0) ? sunlightRgb(t_view) : vec3(0.0);
-        if (nu > cos_alpha) {
+        vec3 sunlight = (sun_disk || moon > 0.0) ? sunlightRgb(t_view) : vec3(0.0);
+        if (sun_disk) {
             float x = safeSqrt(1.0 - nu * nu) / max(sin(alpha), 1e-6);
             float limb = 1.0 - u * (1.0 - safeSqrt(1.0 - x * x));
             float norm = 1.0 / (PI * alpha * alpha * (1.0 - u / 3.0));

@@ -2,6 +2,7 @@
 // convergence with step count (including the stiff near-horizon and sun-below-horizon cases),
 // symmetries, ray geometry from the ground to geostationary orbit, finite non-negative radiance
 // for extreme views, sunset colour, sun and sky light, and the solar position.
+#include "renderer/camera.h"
 #include "sky/atmosphere.h"
 #include "sky/atmosphere_model.h"
 #include "sky/atmosphere_reference.h"
@@ -416,4 +417,35 @@ TEST_CASE("atmosphere: the moon's direction follows its age from the sun, the ce
         glm::dvec3 pole = celestialFromWorld(s) * glm::normalize(glm::dvec3(0.0, 1.0, -1.0));
         CHECK(pole.z == doctest::Approx(1.0).epsilon(1e-9));
     }
+}
+
+TEST_CASE("sky: the sky pass's variants leave out the sun disk, moon and stars only where a view cannot show them") {
+    // Looking north (-z), level, 60 deg vertical at 16:9: the frustum's corners lie 56 deg off the axis.
+    const ViewParams view{{0.0, 2.0, 0.0}, 0.0, 0.0, 60.0, 0.5, 160, 90};
+    const ViewMatrices m = viewMatrices(view);
+    SkySettings sky;
+    const glm::dvec3 ahead = directionFromAngles(0.0, 10.0), beside = directionFromAngles(40.0, 10.0), behind = directionFromAngles(180.0, 30.0);
+    const glm::dvec3 below = directionFromAngles(180.0, -20.0);
+    auto shows = [&](const glm::dvec3& sun, const glm::dvec3& moon, double altitude_m = 2.0) {
+        return skyShows(view, m, sky, sun, moon, altitude_m);
+    };
+    CHECK(shows(ahead, behind).sun_disk);
+    CHECK(shows(beside, behind).sun_disk);  // inside the corners' cone
+    CHECK_FALSE(shows(behind, behind).sun_disk);
+    CHECK(shows(behind, ahead).moon);
+    CHECK_FALSE(shows(ahead, behind).moon);
+    // By day no star shows below 20 km, unless the moon covers the sun; at night, from near space
+    // or in an eclipse they may.
+    CHECK_FALSE(shows(behind, ahead).stars);
+    CHECK(shows(below, ahead).stars);
+    CHECK(shows(behind, ahead, 30000.0).stars);
+    CHECK(shows(ahead, ahead).stars);
+    sky.moon = false;
+    sky.stars = false;
+    CHECK_FALSE(shows(behind, ahead).moon);
+    CHECK_FALSE(shows(below, ahead).stars);
+    // The defines name exactly what is shown, the ground and the part of the screen.
+    CHECK(skyDefines({true, false, true}, false, 1) ==
+          std::vector<std::string>{"SKY_NO_GROUND", "SKY_CLIP=1", "SKY_SUN_DISK", "SKY_STARS"});
+    CHECK(skyDefines({false, true, false}, true, 0) == std::vector<std::string>{"SKY_MOON"});
 }
