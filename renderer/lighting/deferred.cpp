@@ -50,6 +50,7 @@ void addSunLightingPass(FrameGraph& graph, const RenderContext& rc, const SunAnd
             variant.ao = data.ao.valid();
             variant.cloud_shadow = data.cloud_shadow.valid();
             variant.sun_shadow = data.shadow.valid();
+            variant.pcss = !variant.sun_shadow || shadows.pcss;
             if (debug == DebugView::Shadow) variant.debug = SunVariant::Debug::ShadowTerm;
             if (debug == DebugView::Cascades && variant.sun_shadow) variant.debug = SunVariant::Debug::Cascades;
             if (data.shadow.valid()) shadows.bind(ctx.texture(data.shadow));

@@ -244,7 +244,8 @@ SunShadowInput SunShadows::addPasses(FrameGraph& graph, const RenderContext& rc,
     unsigned drawn = 0;
     for (int i = 0; i < count; ++i)
         if (u.info[i].x != 0.0f) drawn |= 1u << i;
-    return {map, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id(), drawn};
+    return {map, objects_.uniforms.id(), objects_.compare.id(), objects_.depth.id(), drawn,
+            settings_.filter == ShadowFilter::Pcss};
 }
 
 TextureHandle addShadowMapViewPass(FrameGraph& graph, const RenderContext& rc, const SunShadowInput& shadows,

@@ -39,6 +39,7 @@ struct SunShadowInput {
     GLuint compare_sampler = 0;  // depth compare, bilinear (PCF)
     GLuint depth_sampler = 0;    // raw depth, nearest (PCSS blocker search)
     unsigned drawn = 0;          // bit c: cascade c had casters (the others' layers are stale)
+    bool pcss = false;           // [shadows] filter = pcss (else a reader may take SHADOW_NO_PCSS)
     bool valid() const { return map.valid(); }
     // Binds the uniforms and map (this pass's texture of `map`) with both samplers at the
     // kShadow* bindings shadows.glsl reads; unbind() takes the samplers off again.

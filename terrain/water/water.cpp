@@ -181,6 +181,7 @@ void Water::addSurfacePasses(FrameGraph& graph, const RenderContext& rc, SceneTa
     if (view_ == WaterView::Shaded) {
         if (lights) variant.lights = lights->stats().method;
         variant.sun_shadow = shadows.valid();
+        variant.pcss = !variant.sun_shadow || shadows.pcss;
     }
     auto draw = visibleDraw(rc);
     const SurfaceData& d = graph.addPass<SurfaceData>("water.surface",

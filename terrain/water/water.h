@@ -47,11 +47,13 @@ struct WaterSurfaceVariant {
     bool sun_shadow = false;             // HAS_SUN_SHADOW: the sun through its cascades
     bool light_chunk = false;            // WATER_LIGHT_CHUNK: one further chunk of local lights alone
     bool velocity = false;               // WATER_VELOCITY: the surface's own motion into temporal.velocity
+    bool pcss = true;                    // false: SHADOW_NO_PCSS, the cascades' filter is hard or pcf (needs sun_shadow)
 
     // The rules between the fields: a debug view replaces the colour, so it takes neither lights
     // nor shadows; a further chunk adds local light only, so it needs lights and no sun.
     // The motion-vector pass shades nothing: none of the others.
     bool valid() const {
+        if (!pcss && !sun_shadow) return false;
         if (velocity) return view == WaterView::Shaded && !lights && !sun_shadow && !light_chunk;
         if (view != WaterView::Shaded) return !lights && !sun_shadow && !light_chunk;
         return !light_chunk || (lights && !sun_shadow);
@@ -62,6 +64,7 @@ struct WaterSurfaceVariant {
         if (view != WaterView::Shaded) d.push_back("WATER_VIEW=" + std::to_string(int(view)));
         if (lights) d.push_back(lightMethodDefine(*lights));
         if (sun_shadow) d.push_back("HAS_SUN_SHADOW");
+        if (!pcss) d.push_back("SHADOW_NO_PCSS");
         if (light_chunk) d.push_back("WATER_LIGHT_CHUNK");
         if (velocity) d.push_back("WATER_VELOCITY");
         return d;
@@ -76,7 +79,8 @@ struct WaterSurfaceVariant {
             for (const auto& lights : methods)
                 for (bool shadow : {false, true})
                     for (bool chunk : {false, true})
-                        if (WaterSurfaceVariant v{view, lights, shadow, chunk}; v.valid()) out.push_back(v);
+                        for (bool pcss : {true, false})
+                            if (WaterSurfaceVariant v{view, lights, shadow, chunk, false, pcss}; v.valid()) out.push_back(v);
         out.push_back(WaterSurfaceVariant{WaterView::Shaded, std::nullopt, false, false, true});
         return out;
     }

@@ -32,6 +32,7 @@ float cascadeVisibility(int c, vec3 pos, vec3 n, float ndotl, float angle) {
     if (mode == 0) return texture(u_shadow_map, vec4(uv, float(c), z));
     int taps = int(u_shadow_params.z);
     float radius = u_cascade_info[c].y;
+#ifndef SHADOW_NO_PCSS  // programs for a hard or pcf filter leave the blocker search out
     if (mode == 2) {
         // Blocker search over the largest penumbra: mean depth of the samples nearer the sun.
         float search = u_shadow_bias.w;
@@ -47,6 +48,7 @@ float cascadeVisibility(int c, vec3 pos, vec3 n, float ndotl, float angle) {
         float distance_m = (z - sum / blockers) * u_cascade_range[c].w;  // blocker to receiver along the light
         radius = clamp(distance_m * u_shadow_bias.z / texel, radius, u_shadow_bias.w);
     }
+#endif
     float lit = 0.0;
     for (int i = 0; i < taps; ++i)
         lit += texture(u_shadow_map, vec4(uv + vogelTap(i, taps, angle) * radius / size, float(c), z));
