@@ -140,7 +140,7 @@ AtmosphereParams atmosphereParams(const SkySettings& s) {
 ProgramList skyPrograms() {
     ProgramList list{{"sky/shaders/transmittance_lut.glsl", {}}, {"sky/shaders/multiscatter_lut.glsl", {}},
                      {"sky/shaders/sky_view_lut.glsl", {}},      {"sky/shaders/aerial_volume.glsl", {}},
-                     {"sky/shaders/aerial.glsl", {}}};
+                     {"sky/shaders/aerial.glsl", {}}, {"sky/shaders/aerial.glsl", {"AERIAL_FROM_SPACE"}}};
     // The sky pass: each combination of what a view shows, for each part of the screen.
     for (int bits = 0; bits < 8; ++bits)
         for (const auto& [ground, clip] : {std::pair{false, 0}, std::pair{true, 0}, std::pair{false, 1}, std::pair{true, -1}})
@@ -467,7 +467,9 @@ void SkyAtmosphere::addAerialPasses(FrameGraph& graph, const RenderContext& rc, 
             upload(u);
             const TextureDesc& desc = ctx.desc(data.hdr);
             bindTarget(rc.device.framebuffer({ctx.texture(data.hdr)}), desc.width, desc.height);
-            glUseProgram(rc.shaders.id("sky/shaders/aerial.glsl"));
+            // From space there is no volume: the variant that marches each pixel's ray.
+            glUseProgram(rc.shaders.id("sky/shaders/aerial.glsl", data.inscatter.valid() ? std::vector<std::string>{}
+                                                                                          : std::vector<std::string>{"AERIAL_FROM_SPACE"}));
             glBindTextureUnit(binding::kTex0, ctx.texture(data.depth));
             if (data.inscatter.valid()) {
                 glBindTextureUnit(binding::kTex1, ctx.texture(data.inscatter));

@@ -3,7 +3,8 @@
 // interpolation (renderer/shaders/aerial_fetch.glsl, as the glass drawn after this pass reads it)
 // and applied by dual-source blending:
 // hdr = hdr * transmittance + in-scattering. Pixels at infinite depth (the sky) are left alone.
-// A camera above the atmosphere has no volume: each pixel marches its own ray through the air.
+// A camera above the atmosphere has no volume: each pixel marches its own ray through the air
+// (variant AERIAL_FROM_SPACE: a shader core would run the march's branch for every pixel).
 #include "../../renderer/shaders/fullscreen.glsl"
 
 #ifdef FRAGMENT_SHADER
@@ -29,7 +30,8 @@ void main() {
     vec3 position = positionFromDepth(v_uv, depth);
     float t = length(position) * 1e-3;  // km
     vec3 dir = position * (1e-3 / max(t, 1e-9));
-    if (a_radii.z > topR()) {
+#ifdef AERIAL_FROM_SPACE
+    {
         // From space (no volume): march this pixel's ray from where it enters the atmosphere,
         // its samples gathered towards the lower end, where the air is.
         float r = a_radii.z, mu = clamp(dir.y, -1.0, 1.0);
@@ -41,11 +43,12 @@ void main() {
                                     clamp(dot(dir, a_sun.xyz), -1.0, 1.0), t - t_start, a_sizes2.w, 0);
         o_inscatter = vec4(clamp(skyRgb(sums.radiance), vec3(0.0), vec3(60000.0)), 0.0);
         o_transmittance = vec4(clamp(sums.transmittance, vec3(0.0), vec3(1.0)), 1.0);
-        return;
     }
+#else
     vec3 inscatter, transmittance;
     aerialFetch(u_inscatter, u_aerial_transmittance, a_aerial, v_uv, t, inscatter, transmittance);
     o_inscatter = vec4(inscatter, 0.0);
     o_transmittance = vec4(transmittance, 1.0);
+#endif
 }
 #endif
