@@ -121,6 +121,8 @@ const QualityKnob kKnobs[] = {
     // Sun shadows (bench shadows: error halves from 1024 to 4096 texels at 2-3x the cost).
     {"shadows.resolution", "texels", {512, 1024, 1024, 2048, 4096}, shadowsOn},
     {"shadows.pcf_taps", "taps", {4, 8, 12, 16, 64}, shadowFilterOn},
+    // Terrain casters coarser than the view draws them (docs/shadows.md); 0: full detail.
+    {"shadows.caster_step_texels", "texels", {4, 2, 1, 0.5, 0}, shadowsOn, nullptr, nullptr, "full", false, true},
     // Spot shadows (bench shadows: the hard error falls 7x from a 1024 to a 4096 atlas at 2.6x the cost).
     {"shadows.spot_atlas_resolution", "texels", {1024, 1024, 2048, 4096, 8192}, spotShadowsOn},
     {"shadows.spot_taps", "taps", {4, 8, 16, 16, 64}, spotFilterOn},
