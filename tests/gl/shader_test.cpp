@@ -121,9 +121,10 @@ TEST_CASE("gl: a variant outside allPrograms() fails the test, and a failed comp
 }
 
 TEST_CASE("gl: the variant structs enumerate exactly the valid combinations of their fields") {
-    // lighting.sun: 2 x 2 x 2 fields x 3 debug outputs, less the cascade view without cascades.
+    // lighting.sun: 2 x 2 x 2 fields x 3 debug outputs, less the cascade view without cascades;
+    // with cascades also without the PCSS search (SHADOW_NO_PCSS).
     const std::vector<SunVariant> sun = SunVariant::all();
-    CHECK(sun.size() == 2 * 2 * (2 + 3));
+    CHECK(sun.size() == 2 * 2 * (2 + 3 * 2));
     std::set<std::vector<std::string>> distinct;
     for (const SunVariant& v : sun) {
         CHECK(v.valid());
@@ -131,6 +132,7 @@ TEST_CASE("gl: the variant structs enumerate exactly the valid combinations of t
     }
     CHECK(distinct.size() == sun.size());
     CHECK_FALSE((SunVariant{false, false, false, SunVariant::Debug::Cascades}.valid()));
+    CHECK_FALSE((SunVariant{false, false, false, SunVariant::Debug::None, false}.valid()));  // a filter needs cascades
     // The combinations that used to compile lazily, untested, are listed now.
     const ProgramList listed = allPrograms();
     auto isListed = [&](const ProgramKey& k) { return std::find(listed.begin(), listed.end(), k) != listed.end(); };
@@ -141,8 +143,9 @@ TEST_CASE("gl: the variant structs enumerate exactly the valid combinations of t
     CHECK(LightCullVariant::all().size() == 2 * 2);
     for (const LightCullVariant& v : LightCullVariant::all()) CHECK(screenCulled(v.method));
     // water.surface: unlit or each method, with or without the sun's shadows, each method's further
-    // chunks (no sun), the three debug views alone, and the surface's motion (water.velocity).
-    CHECK(WaterSurfaceVariant::all().size() == 2 + 4 * 3 + 3 + 1);
+    // chunks (no sun), the three debug views alone, and the surface's motion (water.velocity); the
+    // five with the sun's shadows also without the PCSS search.
+    CHECK(WaterSurfaceVariant::all().size() == 2 + 4 * 3 + 3 + 1 + 5);
 }
 
 TEST_CASE("gl: a shader error is reported at its file:line through an include") {
