@@ -964,6 +964,12 @@ void FrameRenderer::reportAfterFrame(const Frame& f, FrameReport& report) const 
     if (sky.sun_mode == SunMode::Time) report.counters["sky.time_of_day_h"] = sky.time_of_day_h;
     report.counters["sky.sun_elevation_deg"] = glm::degrees(std::asin(std::clamp(sunDirection(sky).y, -1.0, 1.0)));
     report.counters["sky.lux"] = f.sky_light.upLux(sky.sun_illuminance);  // physical: the scaled units cancel
+    if (sky.enabled && sky_.get()) {  // what the sky pass's variant draws (docs/atmosphere.md)
+        const SkyShows& shows = sky_.get()->frameShows();
+        report.counters["sky.shows_sun_disk"] = shows.sun_disk ? 1.0 : 0.0;
+        report.counters["sky.shows_moon"] = shows.moon ? 1.0 : 0.0;
+        report.counters["sky.shows_stars"] = shows.stars ? 1.0 : 0.0;
+    }
 }
 
 std::size_t FrameRenderer::gpuMemoryBytes() const {

@@ -109,6 +109,8 @@ public:
     GLuint frameUniformBuffer() const { return frame_uniforms_.id(); }
     // True when this frame's camera is above the atmosphere (the sky-view LUT is then not rebuilt).
     bool frameInSpace() const { return frame_in_space_; }
+    // What this frame's sky pass draws of the optional (its variant; counters sky.shows_*).
+    const SkyShows& frameShows() const { return frame_shows_; }
     // This frame's aerial-perspective volume, after addAerialPerspective(): for forward surfaces
     // drawn after "sky.aerial" that fog themselves at their own distance (the glass). Invalid
     // without aerial perspective, depth or volume (a camera in space marches per pixel instead).

@@ -41,6 +41,7 @@ struct Rendered {
     std::vector<std::uint16_t> hdr;
     std::uint64_t nonfinite = 0;
     double pre_exposure = 1.0;  // the frame's (sky/night_light.h): hdr holds radiance times this
+    bool shows_stars = false;   // the sky pass's variant has the star field (counter sky.shows_stars)
 };
 
 Rendered render(const Settings& s, const ViewParams& view) {
@@ -51,7 +52,9 @@ Rendered render(const Settings& s, const ViewParams& view) {
     request.capture_hdr = &out.hdr;
     request.count_nonfinite = true;
     r.resetHistory();  // a first frame: no TAA jitter or history, as the test expects
-    out.pre_exposure = r.render(s, view, 0.0, request).counters.at("sky.pre_exposure");
+    const FrameReport report = r.render(s, view, 0.0, request);
+    out.pre_exposure = report.counters.at("sky.pre_exposure");
+    out.shows_stars = report.counters.at("sky.shows_stars") != 0.0;
     for (const auto& c : r.counters().collect(true)) out.nonfinite += c.value;
     return out;
 }
@@ -384,6 +387,9 @@ TEST_CASE("gl: stars show at night, fade at dusk and are gone by day") {
         s.sky.stars = true;
         Rendered on = render(s, v);
         CHECK(on.nonfinite == 0);
+        // The star field is in the program only when a sky dark enough for it is possible.
+        CHECK(on.shows_stars == (sun_elevation < 0.0f));
+        CHECK_FALSE(off.shows_stars);
         std::pair<int, double> stars{0, 0.0};  // pixels well above the sky, and the starlight added
         for (std::size_t i = 0; i < std::size_t(v.width * v.height); ++i) {
             const float a = glm::unpackHalf1x16(off.hdr[i * 4 + 1]), b = glm::unpackHalf1x16(on.hdr[i * 4 + 1]);
