@@ -49,10 +49,9 @@ struct SkyShows {
     bool moon = true;      // the moon's disk (SKY_MOON; [sky] moon on)
     bool stars = true;     // the star field (SKY_STARS; [sky] stars on and a sky dark enough somewhere)
 };
-// sun and moon are unit vectors; in_space: the camera above the atmosphere (a black sky shows stars
-// by day); altitude_m above sea level. The stars need a sky darker than a tenth of the brightest
-// star, which a sky lit by a sun at or above the horizon never is below 20 km, unless the moon
-// eclipses it.
+// sun and moon are unit vectors; altitude_m is the camera's above sea level. The stars need a sky
+// darker than a tenth of the brightest star, which a sky lit by a sun at or above the horizon never
+// is below 20 km (higher up, and from space, the sky darkens), unless the moon eclipses the sun.
 SkyShows skyShows(const ViewParams& view, const ViewMatrices& m, const SkySettings& sky, const glm::dvec3& sun,
                   const glm::dvec3& moon, double altitude_m);
 // The sky pass's defines for a part of the screen (clip: 0 whole, 1 rays up, -1 rays down) and

@@ -696,12 +696,12 @@ void Terrain::decimateCasters(std::vector<TerrainInstance>& out, std::size_t fir
     for (std::size_t i = first; i < out.size(); ++i) caster_steps_.push_back(out[i].a.z);
     const std::vector<int> k = casterDecimation(caster_steps_, source_.grid / 2, coarsest_step_m);
     // Grouped by k (a draw each), finest first; the order within a group is kept.
-    shadow_scratch_.assign(out.begin() + std::ptrdiff_t(first), out.end());
+    shadow_split_.assign(out.begin() + std::ptrdiff_t(first), out.end());
     std::size_t at = first;
     for (int level = 0; level < int(decimated_.size()); ++level)
         for (std::size_t i = 0; i < k.size(); ++i)
             if (k[i] == level) {
-                out[at] = shadow_scratch_[i];
+                out[at] = shadow_split_[i];
                 out[at++].b.w = float(level);
             }
 }

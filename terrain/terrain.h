@@ -216,6 +216,13 @@ private:
     // the tessellated shadow program through matrix, then makes program current again.
     void drawShadowPatches(const RenderContext& rc, const TerrainSettings& s, GLuint program, const glm::mat4& matrix,
                            std::size_t first, std::size_t count);
+    // Draws instances [first, end) of the bound range, a draw per run of equal decimation (b.w).
+    void drawCasterRuns(const RenderContext& rc, GLuint program, TerrainBlock& block, const std::vector<TerrainInstance>& list,
+                        std::size_t first);
+    // shadowInstances()'s steps: the displaced quadrants first (their count), then out[first..]
+    // grouped by casterDecimation().
+    std::size_t shadowPatchesFirst(const TerrainSettings& s, std::vector<TerrainInstance>& out, bool tessellate);
+    void decimateCasters(std::vector<TerrainInstance>& out, std::size_t first, double coarsest_step_m);
 
     TerrainSettings source_;  // what was loaded (file, mapping)
     Heightmap map_;
@@ -249,7 +256,7 @@ private:
     double error_scale_ = 1.0;          // the main camera's pixels per (length / distance), from select()
     double near_m_ = 0.1;               // the main camera's near plane (m), from select()
     std::size_t tess_count_ = 0;        // instances_ (a prefix of the near tier) drawn tessellated
-    std::vector<TerrainInstance> shadow_split_;  // scratch for shadowInstances(): beyond the tessellated range
+    std::vector<TerrainInstance> shadow_split_;  // scratch for shadowInstances(): beyond the tessellated range, then by decimation
     ShaderLibrary* shaders_ = nullptr;  // for the tessellated shadow program
     float max_anisotropy_ = 1.0f;  // the GL's limit (1 without the extension)
     float anisotropy_ = 1.0f;      // what the material textures are set to
@@ -267,15 +274,7 @@ private:
     GLsizei index_count_ = 0;  // the full grid's; the buffer holds the decimated grids after it
     // The grid with every 2^k-th vertex (k = 0: the full grid): offset and count in grid_indices_.
     std::vector<std::pair<GLsizei, GLsizei>> decimated_;
-    std::vector<TerrainInstance> shadow_scratch_;
-    // Draws instances [first, end) of the bound range, a draw per run of equal decimation (b.w).
-    void drawCasterRuns(const RenderContext& rc, GLuint program, TerrainBlock& block, const std::vector<TerrainInstance>& list,
-                        std::size_t first);
-    // shadowInstances()'s steps: the displaced quadrants first (their count), then out[first..]
-    // grouped by casterDecimation().
-    std::size_t shadowPatchesFirst(const TerrainSettings& s, std::vector<TerrainInstance>& out, bool tessellate);
-    void decimateCasters(std::vector<TerrainInstance>& out, std::size_t first, double coarsest_step_m);
-    std::vector<float> caster_steps_;
+    std::vector<float> caster_steps_;  // scratch for decimateCasters()
     std::size_t max_instances_ = 0;
 };
 
